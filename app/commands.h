@@ -1,0 +1,33 @@
+// The subcommands of `vigil`. Each Add*Command registers one subcommand (its options and its action) on the
+// root app; the actions throw vigil::InputError for bad input (exit 2) and return the exit status otherwise.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace vigil::app {
+
+// The action of a subcommand, run after parsing; returns the exit status.
+using Action = std::function<int()>;
+
+// Registers `action` to run when `cmd` is the parsed subcommand.
+void SetAction(CLI::App* cmd, Action action);
+
+// Options that several commands share: a config file, --set overrides and --seed.
+struct ConfigArgs {
+  std::string config_path;
+  std::vector<std::string> overrides;
+  long long seed = -1;  // -1: keep the config's seed
+
+  // Adds CONFIG (positional, required unless `optional`), --set and --seed to `cmd`.
+  void AddTo(CLI::App* cmd, bool optional = false);
+  // The overrides with --seed appended as "seed=N".
+  std::vector<std::string> AllOverrides() const;
+};
+
+void AddConfigCommand(CLI::App& root);
+
+}  // namespace vigil::app

@@ -1,0 +1,66 @@
+// vigil: visual-inertial odometry under IMU faults. See README.md and ../shared/spec/cli.md.
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+namespace vigil::app {
+namespace {
+std::map<const CLI::App*, Action>& Actions() {
+  static std::map<const CLI::App*, Action> actions;
+  return actions;
+}
+}  // namespace
+
+void SetAction(CLI::App* cmd, Action action) { Actions()[cmd] = std::move(action); }
+
+void ConfigArgs::AddTo(CLI::App* cmd, bool optional) {
+  auto* opt = cmd->add_option("CONFIG", config_path, "run configuration (YAML; see configs/README.md)");
+  if (!optional) opt->required();
+  cmd->add_option("--set", overrides, "override a config key: key.path=value (repeatable)")->take_all();
+  cmd->add_option("--seed", seed, "run seed (overrides the config's `seed`)")->check(CLI::NonNegativeNumber);
+}
+
+std::vector<std::string> ConfigArgs::AllOverrides() const {
+  std::vector<std::string> all = overrides;
+  if (seed >= 0) all.push_back("seed=" + std::to_string(seed));
+  return all;
+}
+
+}  // namespace vigil::app
+
+int main(int argc, char** argv) {
+  using namespace vigil::app;
+  CLI::App root{"vigil: a laboratory for visual-inertial odometry under IMU faults"};
+  root.require_subcommand(1);
+  root.set_version_flag("--version", "vigil 0.1.0");
+  AddConfigCommand(root);
+  try {
+    root.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return root.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return root.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return root.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "vigil: error: %s\n", e.what());
+    return 2;
+  }
+  for (const CLI::App* cmd : root.get_subcommands()) {
+    auto it = Actions().find(cmd);
+    if (it == Actions().end()) continue;
+    try {
+      return it->second();
+    } catch (const vigil::InputError& e) {
+      std::fprintf(stderr, "vigil: error: %s\n", e.what());
+      return 2;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "vigil: error: %s\n", e.what());
+      return 1;
+    }
+  }
+  return 0;
+}

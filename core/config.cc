@@ -1,0 +1,175 @@
+#include "core/config.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/format.h"
+
+namespace vigil::config {
+
+bool Bounds::Contains(double x) const {
+  if (lo && (lo_open ? !(x > *lo) : !(x >= *lo))) return false;
+  if (hi && (hi_open ? !(x < *hi) : !(x <= *hi))) return false;
+  return true;
+}
+
+std::string Bounds::Describe() const {
+  if (lo && hi) {
+    return std::string("in ") + (lo_open ? "(" : "[") + FormatDouble(*lo) + ", " + FormatDouble(*hi) +
+           (hi_open ? ")" : "]");
+  }
+  if (lo) return (lo_open ? "> " : ">= ") + FormatDouble(*lo);
+  if (hi) return (hi_open ? "< " : "<= ") + FormatDouble(*hi);
+  return "";
+}
+
+bool InBounds(double x, const Bounds& b) { return b.Contains(x); }
+
+namespace {
+bool ScalarText(const YAML::Node& n, std::string* text, std::string* why) {
+  if (!n.IsScalar()) {
+    *why = n.IsSequence() ? "expected a single value, got a list" : "expected a single value";
+    return false;
+  }
+  *text = n.Scalar();
+  return true;
+}
+}  // namespace
+
+bool Decode(const YAML::Node& n, bool* out, std::string* why) {
+  std::string t;
+  if (!ScalarText(n, &t, why)) return false;
+  if (t == "true" || t == "True" || t == "TRUE") {
+    *out = true;
+    return true;
+  }
+  if (t == "false" || t == "False" || t == "FALSE") {
+    *out = false;
+    return true;
+  }
+  *why = "expected true or false, got '" + t + "'";
+  return false;
+}
+
+bool Decode(const YAML::Node& n, int64_t* out, std::string* why) {
+  std::string t;
+  if (!ScalarText(n, &t, why)) return false;
+  if (!ParseInt64(t, out)) {
+    *why = "expected an integer, got '" + t + "'";
+    return false;
+  }
+  return true;
+}
+
+bool Decode(const YAML::Node& n, int* out, std::string* why) {
+  int64_t v = 0;
+  if (!Decode(n, &v, why)) return false;
+  if (v < INT32_MIN || v > INT32_MAX) {
+    *why = "integer out of range";
+    return false;
+  }
+  *out = static_cast<int>(v);
+  return true;
+}
+
+bool Decode(const YAML::Node& n, uint64_t* out, std::string* why) {
+  int64_t v = 0;
+  if (!Decode(n, &v, why)) return false;
+  if (v < 0) {
+    *why = "expected a non-negative integer";
+    return false;
+  }
+  *out = static_cast<uint64_t>(v);
+  return true;
+}
+
+bool Decode(const YAML::Node& n, double* out, std::string* why) {
+  std::string t;
+  if (!ScalarText(n, &t, why)) return false;
+  if (!ParseDouble(t, out)) {
+    *why = "expected a finite number, got '" + t + "'";
+    return false;
+  }
+  return true;
+}
+
+bool Decode(const YAML::Node& n, std::string* out, std::string* why) {
+  return ScalarText(n, out, why);
+}
+
+Reader::Reader(YAML::Node node, std::string origin, bool has_lines, std::string prefix)
+    : node_(std::move(node)), origin_(std::move(origin)), has_lines_(has_lines), prefix_(std::move(prefix)) {}
+
+YAML::Node Reader::Take(const char* key) {
+  known_.insert(key);
+  const YAML::Node& cnode = node_;  // const access never inserts
+  return cnode[key];
+}
+
+void Reader::Fail(const YAML::Node& n, const std::string& key, const std::string& why) const {
+  const int line = has_lines_ && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+  throw InputError(Located(origin_, line, Path(key) + ": " + why));
+}
+
+void Reader::RejectUnknownKeys() const {
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (!known_.count(key)) Fail(it->first, key, "unknown key");
+  }
+}
+
+YAML::Node LoadYamlFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open for reading");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return YAML::Load(text.str());
+  } catch (const YAML::ParserException& e) {
+    throw InputError(Located(path, e.mark.line + 1, "YAML syntax error: " + e.msg));
+  }
+}
+
+YAML::Node NestKey(const std::string& key_path, const YAML::Node& value) {
+  YAML::Node root(YAML::NodeType::Map);
+  YAML::Node cur = root;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = key_path.find('.', start);
+    const std::string part = key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty()) throw InputError("--set " + key_path + ": empty key component");
+    if (dot == std::string::npos) {
+      cur[part] = value;
+      break;
+    }
+    cur[part] = YAML::Node(YAML::NodeType::Map);
+    cur.reset(cur[part]);  // rebind (operator= would assign into the node)
+    start = dot + 1;
+  }
+  return root;
+}
+
+void Writer::Emit(bool v) { out_ << (v ? "true" : "false"); }
+void Writer::Emit(int v) { out_ << v; }
+void Writer::Emit(int64_t v) { out_ << v; }
+void Writer::Emit(uint64_t v) { out_ << v; }
+void Writer::Emit(double v) { out_ << FormatDouble(v); }
+void Writer::Emit(const std::string& v) { out_ << v; }
+
+std::string Describer::Show(bool v) { return v ? "true" : "false"; }
+std::string Describer::Show(int v) { return std::to_string(v); }
+std::string Describer::Show(int64_t v) { return std::to_string(v); }
+std::string Describer::Show(uint64_t v) { return std::to_string(v); }
+std::string Describer::Show(double v) { return FormatDouble(v); }
+std::string Describer::Show(const std::string& v) { return v.empty() ? "\"\"" : v; }
+
+std::string KeysMarkdownTable(const std::vector<KeyDoc>& keys) {
+  std::string s = "| key | type | default | allowed | description |\n|---|---|---|---|---|\n";
+  for (const auto& k : keys) {
+    s += "| `" + k.path + "` | " + k.type + " | `" + k.default_value + "` | " + k.allowed + " | " + k.doc + " |\n";
+  }
+  return s;
+}
+
+}  // namespace vigil::config

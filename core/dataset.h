@@ -1,0 +1,65 @@
+// The dataset directory of formats.md, in memory and on disk.
+//
+// `vigil simulate` writes it, `vigil clean` and `vigil run --dataset` read it. Every reader validates what it
+// reads (column count, finite numbers, strictly increasing timestamps) and reports "file:line: reason".
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/types.h"
+
+namespace vigil {
+
+struct Dataset {
+  ImuStream imu;                       // measured (glitches included)
+  ImuStream imu_clean;                 // the same samples without the injected glitches
+  std::vector<GlitchRecord> glitches;  // one row per (sample, axis)
+  std::vector<NavState> groundtruth;   // at IMU rate
+  std::vector<Landmark> landmarks;
+  std::vector<CameraFrame> frames;     // feature tracks per camera frame (frames without features included)
+  CameraModel camera;
+};
+
+// File names inside a dataset directory.
+namespace dataset_files {
+inline constexpr const char* kConfig = "config.yaml";
+inline constexpr const char* kImu = "imu.csv";
+inline constexpr const char* kImuClean = "imu_clean.csv";
+inline constexpr const char* kGlitches = "glitches.csv";
+inline constexpr const char* kGroundTruth = "groundtruth.csv";
+inline constexpr const char* kLandmarks = "landmarks.csv";
+inline constexpr const char* kFeatures = "features.csv";
+inline constexpr const char* kCamera = "camera.yaml";
+}  // namespace dataset_files
+
+// Serialization of each file (the text is what is written; reading parses a path).
+std::string ImuCsv(const ImuStream& imu);
+std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches);
+std::string GroundTruthCsv(const std::vector<NavState>& states);
+std::string LandmarksCsv(const std::vector<Landmark>& landmarks);
+// One row per observation; `frames` must be in time order.
+std::string FeaturesCsv(const std::vector<CameraFrame>& frames);
+std::string CameraYaml(const CameraModel& camera);
+
+ImuStream ReadImuCsv(const std::string& path);
+std::vector<GlitchRecord> ReadGlitchesCsv(const std::string& path);
+std::vector<NavState> ReadGroundTruthCsv(const std::string& path);
+std::vector<Landmark> ReadLandmarksCsv(const std::string& path);
+// Groups rows by timestamp. Camera frames with no visible feature do not appear in the file; pass the
+// camera rate's frame times in `frame_times_ns` to get them back as empty frames (or leave it empty).
+std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path, const std::vector<int64_t>& frame_times_ns = {});
+CameraModel ReadCameraYaml(const std::string& path);
+
+// Writes every file except config.yaml into `dir` (which must exist).
+void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset);
+// Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent).
+Dataset ReadDataset(const std::filesystem::path& dir);
+
+// rpg / TUM trajectory text: "# timestamp tx ty tz qx qy qz qw", seconds with 9 decimals.
+std::string TumTrajectory(const Trajectory& trajectory);
+Trajectory ReadTumTrajectory(const std::string& path);
+
+}  // namespace vigil

@@ -1,0 +1,42 @@
+// Writing results without ever leaving half-written output or silently replacing what a user has.
+//
+// StagedDirectory: a command writes its output directory into a temporary sibling and renames it into place
+// at the end; on an error (or an exception unwinding past it) the temporary is removed and nothing changes.
+// WriteFileAtomic: one file, via a temporary file in the same directory and rename(2).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace vigil {
+
+class StagedDirectory {
+ public:
+  // Refuses (InputError) an existing non-empty `final_dir` unless `force`; an existing file of that name is
+  // always refused. Creates the temporary sibling "<final_dir>.tmp-<pid>".
+  StagedDirectory(std::filesystem::path final_dir, bool force);
+  ~StagedDirectory();
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+
+  // Where to write now.
+  const std::filesystem::path& path() const { return staging_; }
+  // Moves the staged directory into place (replacing the old one when forced).
+  void Commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path staging_;
+  bool committed_ = false;
+};
+
+// Refuses (InputError) a non-empty existing directory unless `force`; otherwise creates it if missing.
+void PrepareOutputDirectory(const std::filesystem::path& dir, bool force);
+
+// Writes `content` to `path` via "<path>.tmp-<pid>" + rename. Throws std::runtime_error on I/O failure.
+void WriteFileAtomic(const std::filesystem::path& path, const std::string& content);
+
+// Reads a whole file; InputError "path: cannot open for reading" if it cannot.
+std::string ReadFile(const std::filesystem::path& path);
+
+}  // namespace vigil

@@ -1,0 +1,24 @@
+#include "core/types.h"
+
+#include <cmath>
+
+namespace vigil {
+namespace {
+constexpr std::array<const char*, kNumImuAxes> kAxisNames = {"wx", "wy", "wz", "ax", "ay", "az"};
+}  // namespace
+
+int64_t SToNs(double t_s) { return static_cast<int64_t>(std::llround(t_s * 1e9)); }
+
+const char* ImuAxisName(ImuAxis axis) { return kAxisNames[static_cast<int>(axis)]; }
+
+bool ParseImuAxis(const std::string& name, ImuAxis* axis) {
+  for (int i = 0; i < kNumImuAxes; ++i) {
+    if (name == kAxisNames[i]) {
+      *axis = static_cast<ImuAxis>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace vigil

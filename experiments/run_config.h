@@ -1,0 +1,42 @@
+// The configuration of one run: simulation, detection, estimation and evaluation.
+//
+// This is the schema of configs/*.yaml and of the config.yaml written into every dataset and run directory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "detectors/detector_options.h"
+#include "estimator/estimator_options.h"
+#include "experiments/evaluation_options.h"
+#include "sim/sim_options.h"
+
+namespace vigil::experiments {
+
+struct RunConfig {
+  uint64_t seed = 1;
+  sim::SimOptions sim;
+  detectors::DetectorOptions detector;
+  estimator::EstimatorOptions estimator;
+  EvaluationOptions evaluation;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("seed", seed, "run seed: every random stream derives from (seed, purpose)");
+    sim.Visit(v);  // the simulator's sections sit at the top level
+    v.Section("detector", detector, "glitch detection and mitigation");
+    v.Section("estimator", estimator, "sliding-window visual-inertial estimator");
+    v.Section("evaluation", evaluation, "trajectory evaluation");
+  }
+};
+
+// Loads `path` (when not empty), then applies `overrides` ("key.path=value", in order), then checks
+// cross-field constraints. Throws InputError naming the file, line and key.
+RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Cross-field checks that a single key's bounds cannot express; throws InputError("<origin>: key: reason").
+void ValidateRunConfig(const RunConfig& config, const std::string& origin);
+
+}  // namespace vigil::experiments

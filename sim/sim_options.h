@@ -1,0 +1,132 @@
+// Options of the simulator: trajectory, landmarks, IMU, camera and glitch injection.
+// Keys are documented in configs/README.md (generated from these Visit() descriptions).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/config.h"
+#include "core/types.h"
+
+namespace vigil::sim {
+
+enum class TrajectoryType { kEllipse, kRescue, kWaypoints };
+
+struct TrajectoryOptions {
+  TrajectoryType type = TrajectoryType::kEllipse;
+  std::string waypoints_file;  // for type waypoints: timed poses (see configs/README.md)
+
+  template <class V>
+  void Visit(V& v) {
+    v.Enum("type", type,
+           config::EnumNames<TrajectoryType>{{"ellipse", TrajectoryType::kEllipse},
+                                             {"rescue", TrajectoryType::kRescue},
+                                             {"waypoints", TrajectoryType::kWaypoints}},
+           "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
+           "waypoints (C2 spline through timed poses)");
+    v.Field("waypoints_file", waypoints_file, "timed pose file for type waypoints (relative to the config file)");
+  }
+};
+
+enum class LandmarkLayout { kHouse, kRandom, kHouseAndRandom };
+
+struct LandmarkOptions {
+  LandmarkLayout layout = LandmarkLayout::kHouse;
+  int random_count = 0;  // random points on walls and boxes around the path
+
+  template <class V>
+  void Visit(V& v) {
+    v.Enum("layout", layout,
+           config::EnumNames<LandmarkLayout>{{"house", LandmarkLayout::kHouse},
+                                             {"random", LandmarkLayout::kRandom},
+                                             {"house+random", LandmarkLayout::kHouseAndRandom}},
+           "house: the 36-point house of the reference simulator; random: points on walls/boxes around the path");
+    v.Field("random_count", random_count, "number of random landmarks", config::Bounds::NonNegative());
+  }
+};
+
+struct ImuNoiseOptions {
+  bool enabled = true;
+  double gyro_noise_density = 0.015;       // [rad/s/sqrt(Hz)]
+  double accel_noise_density = 0.019;      // [m/s^2/sqrt(Hz)]
+  double gyro_bias_random_walk = 1e-5;     // [rad/s^2/sqrt(Hz)]
+  double accel_bias_random_walk = 1e-4;    // [m/s^3/sqrt(Hz)]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("enabled", enabled, "add white noise and bias random walk (false: ideal IMU, zero bias)");
+    v.Field("gyro_noise_density", gyro_noise_density, "gyro white noise density [rad/s/sqrt(Hz)]",
+            Bounds::NonNegative());
+    v.Field("accel_noise_density", accel_noise_density, "accelerometer white noise density [m/s^2/sqrt(Hz)]",
+            Bounds::NonNegative());
+    v.Field("gyro_bias_random_walk", gyro_bias_random_walk, "gyro bias random walk [rad/s^2/sqrt(Hz)]",
+            Bounds::NonNegative());
+    v.Field("accel_bias_random_walk", accel_bias_random_walk, "accelerometer bias random walk [m/s^3/sqrt(Hz)]",
+            Bounds::NonNegative());
+  }
+};
+
+struct ImuOptions {
+  double rate_hz = 200.0;
+  ImuNoiseOptions noise;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("rate_hz", rate_hz, "IMU sampling rate [Hz]", config::Bounds::Positive());
+    v.Section("noise", noise, "IMU noise model");
+  }
+};
+
+struct GlitchOptions {
+  bool enabled = false;
+  double mean = 0.0;   // mu of N(mu, sigma), in the axis' unit
+  double std = 1.0;    // sigma (a standard deviation)
+  double rate = 0.01;  // probability per IMU sample that a glitch (burst) starts
+  std::vector<ImuAxis> axes = {ImuAxis::kAz};
+  int burst_length = 1;  // consecutive samples per glitch
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("enabled", enabled, "inject glitches into the measured IMU stream");
+    v.Field("mean", mean, "mean mu of the N(mu, sigma) glitch offset [rad/s or m/s^2]");
+    v.Field("std", std, "standard deviation sigma of the glitch offset", Bounds::NonNegative());
+    v.Field("rate", rate, "probability per IMU sample that a glitch starts", Bounds::Probability());
+    v.EnumList("axes", axes,
+               config::EnumNames<ImuAxis>{{"wx", ImuAxis::kWx},
+                                          {"wy", ImuAxis::kWy},
+                                          {"wz", ImuAxis::kWz},
+                                          {"ax", ImuAxis::kAx},
+                                          {"ay", ImuAxis::kAy},
+                                          {"az", ImuAxis::kAz}},
+               "IMU axes that receive glitches (an independent draw per axis)");
+    v.Field("burst_length", burst_length, "consecutive samples affected by one glitch", Bounds::AtLeast(1));
+  }
+};
+
+// Everything the simulator needs. Its sections sit at the top level of a run config.
+struct SimOptions {
+  double duration_s = 20.0;
+  double gravity_mps2 = 9.81;
+  TrajectoryOptions trajectory;
+  LandmarkOptions landmarks;
+  ImuOptions imu;
+  CameraModel camera;
+  GlitchOptions glitch;
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("duration_s", duration_s, "simulated duration [s]", config::Bounds::Positive());
+    v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity g_W = (0, 0, -g) [m/s^2]",
+            config::Bounds::Positive());
+    v.Section("trajectory", trajectory, "body motion");
+    v.Section("landmarks", landmarks, "3-D landmarks");
+    v.Section("imu", imu, "IMU sampling and noise");
+    v.Section("camera", camera, "pinhole camera and feature tracks");
+    v.Section("glitch", glitch, "injected IMU glitches");
+  }
+};
+
+}  // namespace vigil::sim

@@ -1,0 +1,52 @@
+#include "experiments/run_config.h"
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "tests/core/test_util.h"
+
+namespace vigil::experiments {
+namespace {
+using testing::InputErrorOf;
+using testing::TempDir;
+
+TEST(RunConfig, SpecKeysExistWithTheirTypes) {
+  // The keys that cli.md promises to scripts and tests.
+  const RunConfig c = LoadRunConfig("", {"seed=5", "imu.rate_hz=400", "imu.noise.enabled=false", "camera.rate_hz=20",
+                                         "camera.pixel_noise_px=0.5", "glitch.enabled=true", "glitch.mean=50",
+                                         "glitch.std=10", "glitch.rate=0.02", "glitch.axes=[ax, az]",
+                                         "detector.type=none", "estimator.init=groundtruth", "evaluation.align=se3",
+                                         "evaluation.distances_m=[7, 14]"});
+  EXPECT_EQ(c.seed, 5u);
+  EXPECT_EQ(c.sim.imu.rate_hz, 400.0);
+  EXPECT_FALSE(c.sim.imu.noise.enabled);
+  EXPECT_EQ(c.sim.camera.pixel_noise_px, 0.5);
+  EXPECT_EQ(c.sim.glitch.axes, (std::vector<ImuAxis>{ImuAxis::kAx, ImuAxis::kAz}));
+  EXPECT_EQ(c.evaluation.align, Alignment::kSe3);
+  EXPECT_EQ(c.evaluation.distances_m, (std::vector<double>{7.0, 14.0}));
+}
+
+TEST(RunConfig, BadKeysAreNamed) {
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.axes=[az, q]"}); }),
+            "--set: glitch.axes: must be one of: wx, wy, wz, ax, ay, az");
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"imu.noise.loud=true"}); }), "--set: imu.noise.loud: unknown key");
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.rate=2"}); }), "--set: glitch.rate: must be in [0, 1]");
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.enabled=true", "glitch.axes=[]"}); }),
+            "--set: glitch.axes: must name at least one axis when glitch.enabled is true");
+}
+
+TEST(RunConfig, ShippedConfigsLoadAndEveryKeyIsDocumented) {
+  for (const char* name : {"paper.yaml"}) {
+    const std::string path = std::string(VIGIL_SOURCE_DIR) + "/configs/" + name;
+    EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path); }), "") << path;
+  }
+  std::ifstream in(std::string(VIGIL_SOURCE_DIR) + "/configs/README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  RunConfig c;
+  EXPECT_NE(readme.find(config::KeysMarkdownTable(config::DescribeKeys(c))), std::string::npos)
+      << "configs/README.md's key table is out of date: run scripts/update-config-docs";
+}
+
+}  // namespace
+}  // namespace vigil::experiments
