@@ -29,5 +29,6 @@ struct ConfigArgs {
 };
 
 void AddConfigCommand(CLI::App& root);
+void AddSimulateCommand(CLI::App& root);
 
 }  // namespace vigil::app
