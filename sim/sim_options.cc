@@ -4,6 +4,12 @@
 
 namespace vigil::sim {
 
+void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options) {
+  std::string& file = options->trajectory.waypoints_file;
+  if (file.empty() || std::filesystem::path(file).is_absolute()) return;
+  file = std::filesystem::absolute(base_dir / file).lexically_normal().string();
+}
+
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);

@@ -2,6 +2,7 @@
 // Keys are documented in configs/README.md (generated from these Visit() descriptions).
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,7 @@ struct TrajectoryOptions {
         "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
         "waypoints (C2 spline through timed poses)");
     v.Field("waypoints_file", waypoints_file,
-            "timed pose file for type waypoints (relative to the config file)");
+            "timed pose CSV for type waypoints (relative to the config file; see configs/README.md)");
   }
 };
 
@@ -141,6 +142,11 @@ struct SimOptions {
     v.Section("glitch", glitch, "injected IMU glitches");
   }
 };
+
+// Makes a relative trajectory.waypoints_file absolute, relative to `base_dir` (the config file's directory for
+// paths read from a file, the working directory for --set values), so a written config.yaml works from
+// anywhere. Empty and absolute paths are left alone.
+void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
 // Cross-field checks that single keys' bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateSimOptions(const SimOptions& options, const std::string& origin);

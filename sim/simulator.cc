@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/output.h"
 #include "sim/camera_simulator.h"
 #include "sim/glitch_injector.h"
@@ -27,8 +28,8 @@ Dataset Simulate(const SimOptions& options, uint64_t seed) {
   ValidateSimOptions(options, "simulator options");
   const std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(options.trajectory);
   if (options.duration_s > motion->EndTime())
-    throw InputError("duration_s: " + std::to_string(options.duration_s) +
-                     " s exceeds the trajectory's end (" + std::to_string(motion->EndTime()) + " s)");
+    throw InputError("duration_s: " + FormatDouble(options.duration_s) +
+                     " s exceeds the end of the trajectory (" + FormatDouble(motion->EndTime()) + " s)");
 
   Dataset d;
   ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);

@@ -1,6 +1,9 @@
 #include "sim/trajectory_model.h"
 
+#include "core/error.h"
 #include "sim/ellipse_trajectory.h"
+#include "sim/rescue_trajectory.h"
+#include "sim/waypoint_trajectory.h"
 
 namespace vigil::sim {
 
@@ -9,10 +12,17 @@ std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& op
     case TrajectoryType::kEllipse:
       return std::make_unique<EllipseTrajectory>();
     case TrajectoryType::kRescue:
+      return std::make_unique<RescueTrajectory>();
     case TrajectoryType::kWaypoints:
-      break;
+      if (options.waypoints_file.empty())
+        throw InputError("trajectory.waypoints_file: required for trajectory.type waypoints");
+      try {
+        return std::make_unique<WaypointTrajectory>(ReadWaypoints(options.waypoints_file));
+      } catch (const InputError& e) {
+        throw InputError(std::string("trajectory.waypoints_file: ") + e.what());
+      }
   }
-  throw InputError("trajectory.type: not available yet");
+  throw InputError("trajectory.type: unknown motion model");
 }
 
 }  // namespace vigil::sim

@@ -1,5 +1,8 @@
 #include "sim/simulator.h"
 
+#include <algorithm>
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "core/output.h"
@@ -92,6 +95,30 @@ TEST(Simulator, BadConfigsAreRejectedWithTheKeyAndWriteNothing) {
   const std::string bad = tmp.File("bad.yaml", "seed: 1\nimu:\n  rate_hz: fast\n");
   EXPECT_EQ(InputErrorOf([&] { SimulateCommand(bad, {}, out); }).rfind(bad + ":3: imu.rate_hz", 0), 0u);
   EXPECT_FALSE(fs::exists(out));
+}
+
+// Every shipped scenario simulates and keeps enough landmarks in view for VIO (VINS-Mono wants about 20
+// tracked features per frame). The waypoints file is found relative to the config file, whatever the cwd.
+TEST(Simulator, ShippedScenariosKeepLandmarksInView) {
+  for (const char* name : {"paper.yaml", "rescue.yaml", "waypoints.yaml"}) {
+    const experiments::RunConfig c =
+        experiments::LoadRunConfig(std::string(VIGIL_SOURCE_DIR) + "/configs/" + name);
+    const Dataset d = Simulate(c.sim, c.seed);
+    std::size_t lo = 1 << 30, sum = 0;
+    for (const CameraFrame& f : d.frames) {
+      lo = std::min(lo, f.features.size());
+      sum += f.features.size();
+    }
+    std::printf("%s: %zu frames, features per frame min %zu mean %.1f\n", name, d.frames.size(), lo,
+                static_cast<double>(sum) / static_cast<double>(d.frames.size()));
+    EXPECT_GE(lo, 20u) << name;
+  }
+}
+
+TEST(Simulator, DurationBeyondTheWaypointsIsRejected) {
+  const std::string config = std::string(VIGIL_SOURCE_DIR) + "/configs/waypoints.yaml";
+  const experiments::RunConfig c = experiments::LoadRunConfig(config, {"duration_s=25"});
+  EXPECT_EQ(InputErrorOf([&] { Simulate(c.sim, c.seed); }).rfind("duration_s: ", 0), 0u);
 }
 
 }  // namespace
