@@ -17,7 +17,13 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
     throw InputError(origin + ": glitch.axes: must name at least one axis when glitch.enabled is true");
   if (options.imu.rate_hz < options.camera.rate_hz)
     throw InputError(origin + ": imu.rate_hz: must be at least camera.rate_hz");
-  if (options.imu.rate_hz > 1e6) throw InputError(origin + ": imu.rate_hz: must be at most 1e6");
+  if (options.duration_s * options.imu.rate_hz > kMaxImuSamples)
+    throw InputError(origin + ": duration_s: duration_s x imu.rate_hz must be at most " +
+                     std::to_string(static_cast<long long>(kMaxImuSamples)) + " IMU samples");
+  for (std::size_t i = 0; i < options.glitch.axes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (options.glitch.axes[i] == options.glitch.axes[j])
+        throw InputError(origin + ": glitch.axes: axis " + ImuAxisName(options.glitch.axes[i]) + " listed twice");
   if (options.landmarks.layout != LandmarkLayout::kHouse && options.landmarks.random_count <= 0)
     throw InputError(origin +
                      ": landmarks.random_count: must be > 0 for the layouts random and house+random");

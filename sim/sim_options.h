@@ -148,6 +148,9 @@ struct SimOptions {
 // anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
+// Longest recording the simulator accepts (it is held in memory): 1e7 IMU samples, 14 h at 200 Hz.
+inline constexpr double kMaxImuSamples = 1e7;
+
 // Cross-field checks that single keys' bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateSimOptions(const SimOptions& options, const std::string& origin);
 
