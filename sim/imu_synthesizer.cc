@@ -48,6 +48,12 @@ ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& opti
   out.imu.reserve(times.size());
   out.groundtruth.reserve(times.size());
   Eigen::Vector3d b_g = Eigen::Vector3d::Zero(), b_a = Eigen::Vector3d::Zero();
+  if (noise.enabled) {  // ValidateSimOptions checks that the initial biases have 3 numbers
+    b_g = Eigen::Vector3d(noise.initial_gyro_bias.at(0), noise.initial_gyro_bias.at(1),
+                          noise.initial_gyro_bias.at(2));
+    b_a = Eigen::Vector3d(noise.initial_accel_bias.at(0), noise.initial_accel_bias.at(1),
+                          noise.initial_accel_bias.at(2));
+  }
   for (const int64_t t_ns : times) {
     const TrajectoryState x = motion.StateAt(NsToS(t_ns));
     ImuSample s = IdealImuSample(x, gravity_mps2, t_ns);

@@ -6,8 +6,9 @@
 // Samples are taken at t_k = k / rate_hz, k = 0 .. floor(duration_s * rate_hz) (timestamps rounded to integer
 // nanoseconds; the motion is evaluated at the rounded time so truth and measurement agree exactly). With
 // noise enabled, n ~ N(0, density^2 / dt) independently per axis and sample (stream "imu_noise"); the biases
-// start at zero and after each sample take a random-walk step b += random_walk * sqrt(dt) * N(0, 1) (stream
-// "imu_bias"). The ground truth row of sample k carries the biases in effect in that sample.
+// start at the configured initial biases and after each sample take a random-walk step b += random_walk *
+// sqrt(dt) * N(0, 1) (stream "imu_bias"). The ground truth row of sample k carries the biases in effect in
+// that sample.
 #pragma once
 
 #include <cstdint>

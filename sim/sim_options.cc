@@ -17,6 +17,10 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
     throw InputError(origin + ": glitch.axes: must name at least one axis when glitch.enabled is true");
   if (options.imu.rate_hz < options.camera.rate_hz)
     throw InputError(origin + ": imu.rate_hz: must be at least camera.rate_hz");
+  if (options.imu.noise.initial_gyro_bias.size() != 3)
+    throw InputError(origin + ": imu.noise.initial_gyro_bias: expected 3 numbers (x, y, z)");
+  if (options.imu.noise.initial_accel_bias.size() != 3)
+    throw InputError(origin + ": imu.noise.initial_accel_bias: expected 3 numbers (x, y, z)");
   if (options.duration_s * options.imu.rate_hz > kMaxImuSamples)
     throw InputError(origin + ": duration_s: duration_s x imu.rate_hz must be at most " +
                      std::to_string(static_cast<long long>(kMaxImuSamples)) + " IMU samples");

@@ -62,15 +62,18 @@ struct LandmarkOptions {
 
 struct ImuNoiseOptions {
   bool enabled = true;
-  double gyro_noise_density = 0.015;     // [rad/s/sqrt(Hz)]
-  double accel_noise_density = 0.019;    // [m/s^2/sqrt(Hz)]
-  double gyro_bias_random_walk = 1e-5;   // [rad/s^2/sqrt(Hz)]
-  double accel_bias_random_walk = 1e-4;  // [m/s^3/sqrt(Hz)]
+  double gyro_noise_density = 0.015;                         // [rad/s/sqrt(Hz)]
+  double accel_noise_density = 0.019;                        // [m/s^2/sqrt(Hz)]
+  double gyro_bias_random_walk = 1e-5;                       // [rad/s^2/sqrt(Hz)]
+  double accel_bias_random_walk = 1e-4;                      // [m/s^3/sqrt(Hz)]
+  std::vector<double> initial_gyro_bias = {0.0, 0.0, 0.0};   // b_g at t = 0 [rad/s]
+  std::vector<double> initial_accel_bias = {0.0, 0.0, 0.0};  // b_a at t = 0 [m/s^2]
 
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
-    v.Field("enabled", enabled, "add white noise and bias random walk (false: ideal IMU, zero bias)");
+    v.Field("enabled", enabled,
+            "add white noise, initial biases and bias random walk (false: ideal IMU, zero bias)");
     v.Field("gyro_noise_density", gyro_noise_density, "gyro white noise density [rad/s/sqrt(Hz)]",
             Bounds::NonNegative());
     v.Field("accel_noise_density", accel_noise_density, "accelerometer white noise density [m/s^2/sqrt(Hz)]",
@@ -79,6 +82,9 @@ struct ImuNoiseOptions {
             Bounds::NonNegative());
     v.Field("accel_bias_random_walk", accel_bias_random_walk,
             "accelerometer bias random walk [m/s^3/sqrt(Hz)]", Bounds::NonNegative());
+    v.Field("initial_gyro_bias", initial_gyro_bias, "gyro bias b_g at t = 0 (3 numbers: x, y, z) [rad/s]");
+    v.Field("initial_accel_bias", initial_accel_bias,
+            "accelerometer bias b_a at t = 0 (3 numbers: x, y, z) [m/s^2]");
   }
 };
 
@@ -143,8 +149,8 @@ struct SimOptions {
   }
 };
 
-// Makes a relative trajectory.waypoints_file absolute, relative to `base_dir` (the config file's directory for
-// paths read from a file, the working directory for --set values), so a written config.yaml works from
+// Makes a relative trajectory.waypoints_file absolute, relative to `base_dir` (the config file's directory
+// for paths read from a file, the working directory for --set values), so a written config.yaml works from
 // anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 

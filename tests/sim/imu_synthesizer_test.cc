@@ -90,8 +90,8 @@ TEST(ImuSynthesizer, IdealImuIntegratesBackToGroundTruth) {
       e800.rot_rad);
 }
 
-// The same property on the rescue course (C2 pieces, steps and bumps): still O(dt^2). Measured at 200 Hz: 3 cm
-// over the 36 m loop (the 0.3 s bumps have large higher derivatives), 8 mm at 400 Hz.
+// The same property on the rescue course (C2 pieces, steps and bumps): still O(dt^2). Measured at 200 Hz:
+// 3 cm over the 36 m loop (the 0.3 s bumps have large higher derivatives), 8 mm at 400 Hz.
 TEST(ImuSynthesizer, IdealImuIntegratesBackOnTheRescueCourse) {
   const RescueTrajectory course;
   const double T = RescueTrajectory::kLoopPeriodS;
@@ -153,13 +153,17 @@ TEST(ImuSynthesizer, GroundTruthBiasIsTheBiasInTheSample) {
   o.noise.accel_noise_density = 0.0;
   o.noise.gyro_bias_random_walk = 1e-2;
   o.noise.accel_bias_random_walk = 1e-1;
+  o.noise.initial_gyro_bias = {0.01, -0.02, 0.03};
+  o.noise.initial_accel_bias = {0.1, 0.2, -0.3};
   const ImuSynthesis biased = SynthesizeImu(ellipse, o, 5.0, 9.81, 3);
   const ImuSynthesis ideal = SynthesizeImu(ellipse, Ideal(o.rate_hz), 5.0, 9.81, 3);
   for (std::size_t k = 0; k < biased.imu.size(); ++k) {
     EXPECT_LT((biased.imu[k].w_B - ideal.imu[k].w_B - biased.groundtruth[k].b_g).norm(), 1e-12);
     EXPECT_LT((biased.imu[k].a_B - ideal.imu[k].a_B - biased.groundtruth[k].b_a).norm(), 1e-12);
   }
-  EXPECT_GT(biased.groundtruth.back().b_a.norm(), 1e-3);
+  EXPECT_EQ(biased.groundtruth[0].b_g, Eigen::Vector3d(0.01, -0.02, 0.03));
+  EXPECT_EQ(biased.groundtruth[0].b_a, Eigen::Vector3d(0.1, 0.2, -0.3));
+  EXPECT_GT((biased.groundtruth.back().b_a - biased.groundtruth[0].b_a).norm(), 1e-3);
 }
 
 TEST(ImuSynthesizer, SeedsGiveIndependentNoise) {

@@ -90,6 +90,8 @@ TEST(Simulator, BadConfigsAreRejectedWithTheKeyAndWriteNothing) {
   EXPECT_NE(error({"glitch.axes=[az, up]"}).find("glitch.axes"), std::string::npos);
   EXPECT_NE(error({"glitch.axes=[az, ax, az]"}).find("glitch.axes: axis az listed twice"), std::string::npos);
   EXPECT_NE(error({"duration_s=1e9"}).find("duration_s: "), std::string::npos);
+  EXPECT_NE(error({"imu.noise.initial_accel_bias=[1, 2]"}).find("imu.noise.initial_accel_bias: expected 3"),
+            std::string::npos);
   EXPECT_NE(error({"camera.T_BC=[1, 2, 3]"}).find("camera.T_BC"), std::string::npos);
   EXPECT_NE(error({"landmarks.layout=random"}).find("landmarks.random_count"), std::string::npos);
   EXPECT_NE(error({"trajectory.type=waypoints"}).find("trajectory.waypoints_file"), std::string::npos);

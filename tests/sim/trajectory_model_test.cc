@@ -14,8 +14,8 @@ namespace vigil::sim {
 namespace {
 
 // Checks the model's exact derivatives against central differences of the model itself (the test may use
-// finite differences; the models may not). Central differences err by h^2 / 6 times the next derivative (below
-// 1e-7 here with h = 2e-5 s, even over the rescue course's bumps) plus a rounding error of about 1e-16 / h.
+// finite differences; the models may not). Central differences err by h^2 / 6 times the next derivative
+// (below 1e-7 here with h = 2e-5 s, even over the rescue course's bumps) plus rounding, about 1e-16 |x| / h.
 // The rescue course is only C2 (jerk jumps where its smoothsteps start and end); the sample times below stay
 // clear of those instants.
 void ExpectDerivativesConsistent(const TrajectoryModel& model, double t_end, double tol) {
