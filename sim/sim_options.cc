@@ -27,7 +27,8 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
   for (std::size_t i = 0; i < options.glitch.axes.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (options.glitch.axes[i] == options.glitch.axes[j])
-        throw InputError(origin + ": glitch.axes: axis " + ImuAxisName(options.glitch.axes[i]) + " listed twice");
+        throw InputError(origin + ": glitch.axes: axis " + ImuAxisName(options.glitch.axes[i]) +
+                         " listed twice");
   if (options.landmarks.layout != LandmarkLayout::kHouse && options.landmarks.random_count <= 0)
     throw InputError(origin +
                      ": landmarks.random_count: must be > 0 for the layouts random and house+random");
