@@ -9,26 +9,15 @@ namespace vigil::sim {
 
 std::vector<Landmark> HouseLandmarks() {
   // 18 distinct vertices of a 10 m cube house inside the ellipse: body, roof ridge, door, window.
+  // clang-format off
   static const std::array<Eigen::Vector3d, 18> kVertices = {{
-      {0, 0, 0},
-      {10, 0, 0},
-      {10, 10, 0},
-      {0, 10, 0},  // floor corners
-      {0, 0, 10},
-      {10, 0, 10},
-      {10, 10, 10},
-      {0, 10, 10},  // eaves corners
-      {5, 0, 14},
-      {5, 10, 14},  // roof ridge (gable ends on y = 0 and y = 10)
-      {10, 4, 0},
-      {10, 6, 0},
-      {10, 6, 4},
-      {10, 4, 4},  // door on the x = 10 face
-      {3, 10, 5},
-      {7, 10, 5},
-      {7, 10, 8},
-      {3, 10, 8},  // window on the y = 10 face
+      {0, 0, 0},  {10, 0, 0},  {10, 10, 0},  {0, 10, 0},   // floor corners
+      {0, 0, 10}, {10, 0, 10}, {10, 10, 10}, {0, 10, 10},  // eaves corners
+      {5, 0, 14}, {5, 10, 14},                             // roof ridge (gable ends on y = 0 and y = 10)
+      {10, 4, 0}, {10, 6, 0},  {10, 6, 4},   {10, 4, 4},   // door on the x = 10 face
+      {3, 10, 5}, {7, 10, 5},  {7, 10, 8},   {3, 10, 8},   // window on the y = 10 face
   }};
+  // clang-format on
   const Eigen::Vector3d shift(0.5, 0.5, -0.5);
   std::vector<Landmark> out;
   out.reserve(2 * kVertices.size());
