@@ -1,4 +1,5 @@
 // `vigil simulate`: writes a simulated dataset directory (formats.md) from a run configuration.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -29,11 +30,18 @@ void AddSimulateCommand(CLI::App& root) {
     const Dataset d =
         sim::SimulateToDirectory(config.sim, config.seed, config::ToYaml(config), args->output, args->force);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::size_t fewest = d.frames.empty() ? 0 : d.frames.front().features.size(), observations = 0;
+    for (const CameraFrame& f : d.frames) {
+      fewest = std::min(fewest, f.features.size());
+      observations += f.features.size();
+    }
     std::fprintf(
         stderr,
-        "vigil simulate: %zu IMU samples, %zu camera frames, %zu landmarks, %zu glitch offsets -> %s "
-        "(%.3f s)\n",
-        d.imu.size(), d.frames.size(), d.landmarks.size(), d.glitches.size(), args->output.c_str(), seconds);
+        "vigil simulate: %zu IMU samples, %zu glitch offsets, %zu landmarks, %zu camera frames "
+        "(features per frame: min %zu, mean %.1f) -> %s (%.3f s)\n",
+        d.imu.size(), d.glitches.size(), d.landmarks.size(), d.frames.size(), fewest,
+        d.frames.empty() ? 0.0 : static_cast<double>(observations) / static_cast<double>(d.frames.size()),
+        args->output.c_str(), seconds);
     return 0;
   });
 }
