@@ -1,5 +1,8 @@
 #include "detectors/detector.h"
 
+#include <stdexcept>
+
+#include "core/csv.h"
 #include "core/error.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/hampel_detector.h"
@@ -50,6 +53,17 @@ DetectionResult DetectAndMitigate(const DetectorOptions& options, const ImuStrea
     result.flagged.push_back(d.flagged_axes != 0 ? 1 : 0);
   }
   return result;
+}
+
+std::string DetectionsCsv(const ImuStream& imu, const std::vector<uint8_t>& flagged) {
+  if (imu.size() != flagged.size())
+    throw std::invalid_argument("DetectionsCsv: one flag per sample expected");
+  CsvWriter w("timestamp [ns],flagged");
+  for (std::size_t t = 0; t < imu.size(); ++t) {
+    w << imu[t].t_ns << static_cast<int>(flagged[t] != 0);
+    w.EndRow();
+  }
+  return w.Str();
 }
 
 }  // namespace vigil::detectors

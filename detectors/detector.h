@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/types.h"
@@ -51,5 +52,8 @@ struct DetectionResult {
 // Whole-stream convenience over the streaming detectors. `templates` is required for dtw (else InputError).
 DetectionResult DetectAndMitigate(const DetectorOptions& options, const ImuStream& raw,
                                   const TemplateLibrary* templates = nullptr);
+
+// detections.csv (formats.md): "#timestamp [ns],flagged" with one 0/1 row per sample of `imu`.
+std::string DetectionsCsv(const ImuStream& imu, const std::vector<uint8_t>& flagged);
 
 }  // namespace vigil::detectors
