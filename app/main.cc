@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   root.require_subcommand(1);
   root.set_version_flag("--version", "vigil 0.1.0");
   AddConfigCommand(root);
+  AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
   try {

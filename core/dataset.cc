@@ -194,6 +194,17 @@ CameraModel ReadCameraYaml(const std::string& path) {
   return camera;
 }
 
+std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_t t_last_ns) {
+  std::vector<int64_t> times;
+  const double period_ns = 1e9 / rate_hz;
+  for (int64_t k = 0;; ++k) {
+    const int64_t t = t_first_ns + static_cast<int64_t>(std::llround(static_cast<double>(k) * period_ns));
+    if (t > t_last_ns) break;
+    times.push_back(t);
+  }
+  return times;
+}
+
 void WriteDataset(const fs::path& dir, const Dataset& d) {
   using namespace dataset_files;
   WriteFileAtomic(dir / kImu, ImuCsv(d.imu));
@@ -216,13 +227,7 @@ Dataset ReadDataset(const fs::path& dir) {
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());
   d.camera = ReadCameraYaml((dir / kCamera).string());
   // Camera frame times: every 1/rate_hz from the first IMU sample, within the IMU time span.
-  std::vector<int64_t> frame_times;
-  const double period_ns = 1e9 / d.camera.rate_hz;
-  for (int k = 0;; ++k) {
-    const int64_t t = d.imu.front().t_ns + static_cast<int64_t>(std::llround(k * period_ns));
-    if (t > d.imu.back().t_ns) break;
-    frame_times.push_back(t);
-  }
+  const std::vector<int64_t> frame_times = CameraFrameTimes(d.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns);
   d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times);
   return d;
 }

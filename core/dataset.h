@@ -53,6 +53,10 @@ std::vector<Landmark> ReadLandmarksCsv(const std::string& path);
 std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path, const std::vector<int64_t>& frame_times_ns = {});
 CameraModel ReadCameraYaml(const std::string& path);
 
+// Camera frame times of a recording: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while
+// t_k <= t_last_ns. The simulator takes its frames at these times and ReadDataset reconstructs them this way.
+std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_t t_last_ns);
+
 // Writes every file except config.yaml into `dir` (which must exist).
 void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset);
 // Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent).

@@ -19,13 +19,15 @@ struct TrajectoryOptions {
 
   template <class V>
   void Visit(V& v) {
-    v.Enum("type", type,
-           config::EnumNames<TrajectoryType>{{"ellipse", TrajectoryType::kEllipse},
-                                             {"rescue", TrajectoryType::kRescue},
-                                             {"waypoints", TrajectoryType::kWaypoints}},
-           "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
-           "waypoints (C2 spline through timed poses)");
-    v.Field("waypoints_file", waypoints_file, "timed pose file for type waypoints (relative to the config file)");
+    v.Enum(
+        "type", type,
+        config::EnumNames<TrajectoryType>{{"ellipse", TrajectoryType::kEllipse},
+                                          {"rescue", TrajectoryType::kRescue},
+                                          {"waypoints", TrajectoryType::kWaypoints}},
+        "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
+        "waypoints (C2 spline through timed poses)");
+    v.Field("waypoints_file", waypoints_file,
+            "timed pose file for type waypoints (relative to the config file)");
   }
 };
 
@@ -33,25 +35,36 @@ enum class LandmarkLayout { kHouse, kRandom, kHouseAndRandom };
 
 struct LandmarkOptions {
   LandmarkLayout layout = LandmarkLayout::kHouse;
-  int random_count = 0;  // random points on walls and boxes around the path
+  int random_count = 0;          // random points on the walls of a room around the path
+  double random_margin_m = 5.0;  // distance of the walls from the path's horizontal bounding box
+  double random_height_m = 4.0;  // extra wall height, split above and below the path's height range
 
   template <class V>
   void Visit(V& v) {
-    v.Enum("layout", layout,
-           config::EnumNames<LandmarkLayout>{{"house", LandmarkLayout::kHouse},
-                                             {"random", LandmarkLayout::kRandom},
-                                             {"house+random", LandmarkLayout::kHouseAndRandom}},
-           "house: the 36-point house of the reference simulator; random: points on walls/boxes around the path");
-    v.Field("random_count", random_count, "number of random landmarks", config::Bounds::NonNegative());
+    v.Enum(
+        "layout", layout,
+        config::EnumNames<LandmarkLayout>{{"house", LandmarkLayout::kHouse},
+                                          {"random", LandmarkLayout::kRandom},
+                                          {"house+random", LandmarkLayout::kHouseAndRandom}},
+        "house: the 36-point house of the reference simulator; random: points on the walls of a room around "
+        "the path");
+    v.Field("random_count", random_count, "number of random landmarks (layouts random and house+random)",
+            config::Bounds::NonNegative());
+    v.Field("random_margin_m", random_margin_m,
+            "distance of the random landmarks' walls from the path's horizontal bounding box [m]",
+            config::Bounds::Positive());
+    v.Field("random_height_m", random_height_m,
+            "random landmarks span the path's height range extended by half this above and below [m]",
+            config::Bounds::NonNegative());
   }
 };
 
 struct ImuNoiseOptions {
   bool enabled = true;
-  double gyro_noise_density = 0.015;       // [rad/s/sqrt(Hz)]
-  double accel_noise_density = 0.019;      // [m/s^2/sqrt(Hz)]
-  double gyro_bias_random_walk = 1e-5;     // [rad/s^2/sqrt(Hz)]
-  double accel_bias_random_walk = 1e-4;    // [m/s^3/sqrt(Hz)]
+  double gyro_noise_density = 0.015;     // [rad/s/sqrt(Hz)]
+  double accel_noise_density = 0.019;    // [m/s^2/sqrt(Hz)]
+  double gyro_bias_random_walk = 1e-5;   // [rad/s^2/sqrt(Hz)]
+  double accel_bias_random_walk = 1e-4;  // [m/s^3/sqrt(Hz)]
 
   template <class V>
   void Visit(V& v) {
@@ -63,8 +76,8 @@ struct ImuNoiseOptions {
             Bounds::NonNegative());
     v.Field("gyro_bias_random_walk", gyro_bias_random_walk, "gyro bias random walk [rad/s^2/sqrt(Hz)]",
             Bounds::NonNegative());
-    v.Field("accel_bias_random_walk", accel_bias_random_walk, "accelerometer bias random walk [m/s^3/sqrt(Hz)]",
-            Bounds::NonNegative());
+    v.Field("accel_bias_random_walk", accel_bias_random_walk,
+            "accelerometer bias random walk [m/s^3/sqrt(Hz)]", Bounds::NonNegative());
   }
 };
 
@@ -128,5 +141,8 @@ struct SimOptions {
     v.Section("glitch", glitch, "injected IMU glitches");
   }
 };
+
+// Cross-field checks that single keys' bounds cannot express; throws InputError("<origin>: key: reason").
+void ValidateSimOptions(const SimOptions& options, const std::string& origin);
 
 }  // namespace vigil::sim

@@ -1,0 +1,35 @@
+// 3-D point landmarks of the simulated world.
+//
+// house (ids 0..35): the reference simulator's wire-frame house, 18 distinct vertices plus each vertex
+// shifted by (0.5, 0.5, -0.5). vigil's house is a 10 m cube standing on z = 0 with x, y in [0, 10] (centred
+// on the ellipse's centre (5, 5)), a gable roof whose ridge runs along y at z = 14, a door on the x = 10 face
+// and a window on the y = 10 face (coordinates in landmarks.cc). random: `random_count` points on the four
+// vertical walls of a rectangular room that encloses the path's horizontal bounding box with a margin of
+// `random_margin_m`; each point is uniform over the walls' total length and over heights [min z of the path -
+// h/2, max z of the path + h/2], h = `random_height_m` (stream "landmarks"). Ids follow the house's when both
+// are used.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/types.h"
+#include "sim/sim_options.h"
+
+namespace vigil::sim {
+
+// The 36 house points, ids 0..35.
+std::vector<Landmark> HouseLandmarks();
+
+// `count` points on the walls around `path_W` (positions along the trajectory), ids first_id, first_id + 1,
+// ...
+std::vector<Landmark> RandomWallLandmarks(int count, const std::vector<Eigen::Vector3d>& path_W,
+                                          double margin_m, double height_m, uint64_t seed, int first_id);
+
+// The landmarks selected by `options`.
+std::vector<Landmark> MakeLandmarks(const LandmarkOptions& options,
+                                    const std::vector<Eigen::Vector3d>& path_W, uint64_t seed);
+
+}  // namespace vigil::sim

@@ -1,0 +1,56 @@
+#include "sim/simulator.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "core/output.h"
+#include "sim/camera_simulator.h"
+#include "sim/glitch_injector.h"
+#include "sim/imu_synthesizer.h"
+#include "sim/landmarks.h"
+#include "sim/trajectory_model.h"
+
+namespace vigil::sim {
+namespace {
+
+// Positions along the trajectory (10 Hz) used to lay out landmarks around the path.
+std::vector<Eigen::Vector3d> SamplePath(const TrajectoryModel& motion, double duration_s) {
+  std::vector<Eigen::Vector3d> path;
+  const int n = static_cast<int>(std::ceil(duration_s * 10.0));
+  for (int i = 0; i <= n; ++i) path.push_back(motion.StateAt(std::min(duration_s, 0.1 * i)).p_W);
+  return path;
+}
+
+}  // namespace
+
+Dataset Simulate(const SimOptions& options, uint64_t seed) {
+  ValidateSimOptions(options, "simulator options");
+  const std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(options.trajectory);
+  if (options.duration_s > motion->EndTime())
+    throw InputError("duration_s: " + std::to_string(options.duration_s) +
+                     " s exceeds the trajectory's end (" + std::to_string(motion->EndTime()) + " s)");
+
+  Dataset d;
+  ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
+  d.imu_clean = std::move(imu.imu);
+  d.groundtruth = std::move(imu.groundtruth);
+  d.imu = d.imu_clean;
+  d.glitches = InjectGlitches(options.glitch, seed, &d.imu);
+  d.landmarks = MakeLandmarks(options.landmarks, SamplePath(*motion, options.duration_s), seed);
+  d.camera = options.camera;
+  d.frames = SimulateFeatureTracks(*motion, options.camera, d.landmarks, d.imu.front().t_ns,
+                                   d.imu.back().t_ns, seed);
+  return d;
+}
+
+Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std::string& config_yaml,
+                            const std::filesystem::path& dir, bool force) {
+  StagedDirectory staged(dir, force);  // refuses a non-empty `dir` before any work
+  Dataset d = Simulate(options, seed);
+  WriteFileAtomic(staged.path() / dataset_files::kConfig, config_yaml);
+  WriteDataset(staged.path(), d);
+  staged.Commit();
+  return d;
+}
+
+}  // namespace vigil::sim

@@ -1,0 +1,27 @@
+// The simulator: a whole dataset (formats.md) from SimOptions and a seed.
+//
+// Simulate() chains the stages: motion model -> IMU + ground truth (imu_synthesizer) -> glitches
+// (glitch_injector) -> landmarks -> feature tracks (camera_simulator). Each random stream derives from
+// (seed, purpose): "imu_noise", "imu_bias", "glitch", "glitch_offset", "landmarks", "pixels"; so the same
+// options and seed give the same dataset bit for bit, and e.g. glitch settings never change the IMU noise.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "core/dataset.h"
+#include "sim/sim_options.h"
+
+namespace vigil::sim {
+
+// Simulates one recording. Throws InputError for bad options (naming the key).
+Dataset Simulate(const SimOptions& options, uint64_t seed);
+
+// `vigil simulate`: simulates and writes the dataset directory `dir` (staged in a temporary sibling and
+// renamed at the end; a non-empty `dir` is refused unless `force`). `config_yaml` is written as config.yaml:
+// the fully resolved configuration that reproduces the dataset.
+Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std::string& config_yaml,
+                            const std::filesystem::path& dir, bool force);
+
+}  // namespace vigil::sim
