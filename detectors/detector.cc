@@ -21,7 +21,22 @@ class PassThroughDetector final : public Detector {
 
 }  // namespace
 
+void ValidateDetectorOptions(const DetectorOptions& options) {
+  const std::size_t axes = options.threshold.bounds.size();
+  if (axes != static_cast<std::size_t>(kNumImuAxes))
+    throw InputError("detector.threshold.bounds: expected 6 numbers (wx, wy, wz, ax, ay, az), got " +
+                     std::to_string(axes));
+  if (options.dtw.dims != 3 && options.dtw.dims != 6)
+    throw InputError("detector.dtw.dims: must be 3 (acc) or 6 (acc + gyro), got " +
+                     std::to_string(options.dtw.dims));
+  if (options.dtw.template_length > options.dtw.slice_length)
+    throw InputError("detector.dtw.template_length: must be <= detector.dtw.slice_length (" +
+                     std::to_string(options.dtw.slice_length) + "), got " +
+                     std::to_string(options.dtw.template_length));
+}
+
 std::unique_ptr<Detector> MakeDetector(const DetectorOptions& options, const TemplateLibrary* templates) {
+  ValidateDetectorOptions(options);
   switch (options.type) {
     case DetectorType::kThreshold:
       return std::make_unique<ThresholdDetector>(options.threshold);

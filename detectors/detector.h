@@ -39,6 +39,11 @@ class Detector {
   virtual int latency_samples() const = 0;
 };
 
+// Cross-field checks of the detector options that key bounds cannot express (threshold.bounds has 6 entries,
+// dtw.dims is 3 or 6, dtw.template_length <= dtw.slice_length); InputError "detector.key: reason". Run config
+// validation can call it; MakeDetector() does.
+void ValidateDetectorOptions(const DetectorOptions& options);
+
 // The detector `options.type` selects (kNone: a pass-through that flags nothing). `templates` is required for
 // kDtw (InputError otherwise) and must outlive the detector; invalid options throw InputError.
 std::unique_ptr<Detector> MakeDetector(const DetectorOptions& options,

@@ -5,6 +5,7 @@
 #include "detectors/detection_metrics.h"
 #include "detectors/template_library.h"
 #include "synthetic_imu.h"
+#include "tests/core/test_util.h"
 
 namespace vigil::detectors {
 namespace {
@@ -60,6 +61,30 @@ TEST(Detector, SmallGlitchesRaiseFewFalseAlarms) {
         EvaluateDetection(raw, DetectAndMitigate(options, raw, &library), glitches, clean);
     EXPECT_LT(m.false_positive_rate, 0.02) << static_cast<int>(type);
   }
+}
+
+}  // namespace
+}  // namespace vigil::detectors
+
+namespace vigil::detectors {
+namespace {
+
+TEST(Detector, ValidatesCrossFieldOptions) {
+  DetectorOptions options;
+  options.threshold.bounds = {1.0, 1.0};
+  EXPECT_NE(vigil::testing::InputErrorOf([&] {
+              ValidateDetectorOptions(options);
+            }).find("detector.threshold.bounds"),
+            std::string::npos);
+  options = {};
+  options.dtw.dims = 4;
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { MakeDetector(options); }).find("detector.dtw.dims"),
+            std::string::npos);
+  options = {};
+  options.dtw.template_length = 50;
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { ValidateDetectorOptions(options); }).find("template_length"),
+            std::string::npos);
+  EXPECT_NO_THROW(ValidateDetectorOptions({}));
 }
 
 }  // namespace
