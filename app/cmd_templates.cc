@@ -43,6 +43,9 @@ void AddTemplatesCommand(CLI::App& root) {
     if (!args->force && fs::exists(args->output, ec))
       throw InputError(args->output + ": exists (use --force to replace it)");
     const ImuStream clean = ReadImuCsv(input.imu.string());
+    if (is_dir && file_in_dir == std::string(dataset_files::kImu))
+      std::fprintf(stderr, "vigil templates: %s has no %s, using %s: it must be glitch-free\n",
+                   args->dataset.c_str(), dataset_files::kImuClean, dataset_files::kImu);
     detectors::TemplateLibrary library = detectors::BuildTemplates(clean, options.dtw);
     library.source = input.imu.string();
     WriteFileAtomic(args->output, detectors::TemplateLibraryYaml(library));
