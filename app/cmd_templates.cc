@@ -40,8 +40,12 @@ void AddTemplatesCommand(CLI::App& root) {
             ? dataset_files::kImuClean
             : dataset_files::kImu;
     const ImuInput input = ResolveImuInput(args->dataset, file_in_dir);
-    if (!args->force && fs::exists(args->output, ec))
-      throw InputError(args->output + ": exists (use --force to replace it)");
+    if (fs::exists(args->output, ec)) {
+      // Never rename over a device, directory or other special file (e.g. -o /dev/null).
+      if (!fs::is_regular_file(args->output, ec))
+        throw InputError(args->output + ": exists and is not a regular file");
+      if (!args->force) throw InputError(args->output + ": exists (use --force to replace it)");
+    }
     const ImuStream clean = ReadImuCsv(input.imu.string());
     if (is_dir && file_in_dir == std::string(dataset_files::kImu))
       std::fprintf(stderr, "vigil templates: %s has no %s, using %s: it must be glitch-free\n",
