@@ -1,5 +1,8 @@
 // The detectors on the paper's simulation scenario (ellipse, 20 s, IMU 200 Hz, glitches on acc z at rate
 // 0.01): templates from a glitch-free run with seed 1000, judged on runs with other seeds.
+#include <optional>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "detectors/detection_metrics.h"
@@ -73,6 +76,57 @@ TEST_F(PaperScenario, CleanRunsOfOtherSeedsAreRarelyFlagged) {
   const Dataset data = sim::Simulate(Scenario(false, 0, 1), 4);
   EXPECT_LE(Run(DetectorType::kDtw, data).flagged_segments, 2);
   EXPECT_EQ(Run(DetectorType::kThreshold, data).flagged_samples, 0);
+}
+
+}  // namespace
+}  // namespace vigil::detectors
+
+namespace vigil::detectors {
+namespace {
+
+// The rescue course (a ground robot over a ramp, a platform and bumps): its bumps are real motion, not
+// glitches.
+sim::SimOptions RescueCourse(bool glitches) {
+  sim::SimOptions options = Scenario(glitches, 50, 10);
+  options.trajectory.type = sim::TrajectoryType::kRescue;
+  options.duration_s = 36;
+  options.landmarks.layout = sim::LandmarkLayout::kRandom;
+  options.landmarks.random_count = 300;
+  return options;
+}
+
+// The rescue course run, or nothing (with the reason) when this build's simulator does not have it yet.
+std::optional<Dataset> SimulateRescue(bool glitches, uint64_t seed, std::string* why) {
+  try {
+    return sim::Simulate(RescueCourse(glitches), seed);
+  } catch (const InputError& e) {
+    *why = e.what();
+    return std::nullopt;
+  }
+}
+
+TEST(RescueCourse, LegitimateBumpsRaiseFewFalseAlarmsAndGlitchesAreStillFound) {
+  std::string why;
+  const std::optional<Dataset> templates_run = SimulateRescue(false, 1000, &why);
+  if (!templates_run) GTEST_SKIP() << "rescue course not available in this build: " << why;
+  const TemplateLibrary library = BuildTemplates(templates_run->imu_clean, {});
+  const Dataset clean = *SimulateRescue(false, 1, &why), glitched = *SimulateRescue(true, 1, &why);
+  for (DetectorType type : {DetectorType::kThreshold, DetectorType::kDtw, DetectorType::kHampel}) {
+    DetectorOptions options;
+    options.type = type;
+    const DetectionMetrics on_clean =
+        EvaluateDetection(clean.imu, DetectAndMitigate(options, clean.imu, &library), {}, clean.imu_clean);
+    EXPECT_LT(on_clean.false_positive_rate, type == DetectorType::kDtw ? 0.03 : 0.01)
+        << static_cast<int>(type);
+    const DetectionMetrics on_glitches =
+        EvaluateDetection(glitched.imu, DetectAndMitigate(options, glitched.imu, &library), glitched.glitches,
+                          glitched.imu_clean);
+    EXPECT_GE(on_glitches.recall, 0.95) << static_cast<int>(type);
+    EXPECT_LT(on_glitches.imu_rmse_cleaned, on_glitches.imu_rmse_raw / 3) << static_cast<int>(type);
+    if (type != DetectorType::kHampel) {
+      EXPECT_GE(on_glitches.f1, 0.9) << static_cast<int>(type);
+    }
+  }
 }
 
 }  // namespace
