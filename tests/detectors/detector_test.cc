@@ -89,3 +89,21 @@ TEST(Detector, ValidatesCrossFieldOptions) {
 
 }  // namespace
 }  // namespace vigil::detectors
+
+namespace vigil::detectors {
+namespace {
+
+TEST(Detector, EmptyAndTinyStreams) {
+  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), {});
+  for (const auto& [name, type] : DetectorTypeNames()) {
+    DetectorOptions options;
+    options.type = type;
+    EXPECT_TRUE(DetectAndMitigate(options, {}, &library).cleaned.empty()) << name;
+    const ImuStream tiny = testing::SyntheticImu(1, 5);  // shorter than a DTW slice and a Hampel window
+    const DetectionResult r = DetectAndMitigate(options, tiny, &library);
+    ASSERT_EQ(r.cleaned.size(), tiny.size()) << name;
+  }
+}
+
+}  // namespace
+}  // namespace vigil::detectors
