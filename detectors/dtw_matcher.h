@@ -8,9 +8,10 @@
 // (__builtin_cpu_supports), so the default build needs no -march flag.
 //
 // There is no early abandoning: all templates of a lane group advance together, so dropping one lane saves no
-// instruction, and with the paper's k = 10 both groups run interleaved to the end (their chains overlap, which
-// is what makes the kernel fast). Measured with bench_detectors: about 3 us per slice for k = 10, N = 40,
-// M = 40, d = 3 (0.18 ns per cell, ~20x the scalar double reference), close to the vector units' throughput.
+// instruction, and with the paper's k = 10 both groups run interleaved to the end (their chains overlap,
+// which is what makes the kernel fast). Measured with bench_detectors: about 3 us per slice for k = 10, N =
+// 40, M = 40, d = 3 (0.18 ns per cell, ~20x the scalar double reference), close to the vector units'
+// throughput.
 //
 // A matcher owns its scratch row; after construction (and once the largest slice length has been seen)
 // Distances() and Best() allocate nothing. A matcher is not thread-safe: use one per thread.
