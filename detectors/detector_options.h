@@ -47,7 +47,7 @@ struct ThresholdOptions {
   void Visit(V& v) {
     using config::Bounds;
     v.Field("bounds", bounds,
-            "largest normal |value - reference| per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers)",
+            "largest normal abs(value - reference) per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers)",
             Bounds::Positive());
     v.Field("reference_samples", reference_samples,
             "n: the reference is the mean of the last n normal values", Bounds::AtLeast(1));
@@ -59,7 +59,7 @@ struct ThresholdOptions {
         "after this many consecutive abnormal values an axis accepts the new level (re-seeds its reference)",
         Bounds::AtLeast(1));
     v.Field("calibration_margin", calibration_margin,
-            "calibration: bound = margin x largest |value - reference| seen on clean data",
+            "calibration: bound = margin x largest abs(value - reference) seen on clean data",
             Bounds::AtLeast(1.0));
   }
 };
