@@ -30,5 +30,7 @@ struct ConfigArgs {
 
 void AddConfigCommand(CLI::App& root);
 void AddSimulateCommand(CLI::App& root);
+void AddTemplatesCommand(CLI::App& root);
+void AddCleanCommand(CLI::App& root);
 
 }  // namespace vigil::app

@@ -38,6 +38,8 @@ int main(int argc, char** argv) {
   root.set_version_flag("--version", "vigil 0.1.0");
   AddConfigCommand(root);
   AddSimulateCommand(root);
+  AddTemplatesCommand(root);
+  AddCleanCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

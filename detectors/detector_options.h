@@ -1,5 +1,12 @@
 // Options of the glitch detectors and their mitigation.
+//
+// Every detector reads a stream of IMU samples and writes the same stream, cleaned, with one flag per sample.
+// The axis order of every per-axis list is the imu.csv column order: wx, wy, wz [rad/s], ax, ay, az [m/s^2].
+// Keys are documented in configs/README.md (generated from these Visit() descriptions).
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "core/config.h"
 
@@ -15,12 +22,139 @@ inline const config::EnumNames<DetectorType>& DetectorTypeNames() {
   return names;
 }
 
+// What the threshold detector writes in place of an abnormal value.
+enum class ThresholdMitigation { kTruncate, kMean };
+
+inline const config::EnumNames<ThresholdMitigation>& ThresholdMitigationNames() {
+  static const config::EnumNames<ThresholdMitigation> names = {{"truncate", ThresholdMitigation::kTruncate},
+                                                               {"mean", ThresholdMitigation::kMean}};
+  return names;
+}
+
+// The paper's "trunc" detector, per axis. The reference of an axis is the mean of its last
+// `reference_samples` normal values; a value is abnormal when |value - reference| > bounds[axis]. Abnormal
+// values are truncated to reference +- bound (the paper's mitigation) or replaced by the reference (the mean
+// of the last normal values). Calibration from clean data: CalibrateThresholdBounds (threshold_detector.h),
+// also printed by `vigil templates`.
+struct ThresholdOptions {
+  std::vector<double> bounds = {1.5, 1.5, 1.5, 2.5, 2.5, 2.5};
+  int reference_samples = 4;
+  ThresholdMitigation mitigation = ThresholdMitigation::kTruncate;
+  int max_run = 8;
+  double calibration_margin = 1.5;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("bounds", bounds,
+            "largest normal abs(value - reference) per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers)",
+            Bounds::Positive());
+    v.Field("reference_samples", reference_samples,
+            "n: the reference is the mean of the last n normal values", Bounds::AtLeast(1));
+    v.Enum("mitigation", mitigation, ThresholdMitigationNames(),
+           "truncate: clamp to reference +- bound (the paper); mean: replace by the mean of the last n "
+           "normal values");
+    v.Field(
+        "max_run", max_run,
+        "after this many consecutive abnormal values an axis accepts the new level (re-seeds its reference)",
+        Bounds::AtLeast(1));
+    v.Field("calibration_margin", calibration_margin,
+            "calibration: bound = margin x largest abs(value - reference) seen on clean data",
+            Bounds::AtLeast(1.0));
+  }
+};
+
+// How a slice (and a template) is normalized before the DTW comparison.
+enum class SliceNormalization { kNone, kMedian, kLinear };
+
+inline const config::EnumNames<SliceNormalization>& SliceNormalizationNames() {
+  static const config::EnumNames<SliceNormalization> names = {{"none", SliceNormalization::kNone},
+                                                              {"median", SliceNormalization::kMedian},
+                                                              {"linear", SliceNormalization::kLinear}};
+  return names;
+}
+
+// The paper's DTW detector. The stream is cut into non-overlapping slices of `slice_length` samples; each
+// slice (d = `dims` channels: ax, ay, az, then wx, wy, wz when d = 6) is compared with `templates` templates
+// of `template_length` rows under the DTW distance of Algorithm 1; a best distance above the threshold marks
+// the slice abnormal and replaces it by the best template aligned along the optimal warping path.
+// k, N, M, d and the normalization are build parameters of a template library: a library read from a file
+// carries its own, which then apply.
+struct DtwOptions {
+  std::string templates_file;
+  int templates = 10;
+  int template_length = 10;
+  int slice_length = 40;
+  int dims = 6;
+  SliceNormalization normalization = SliceNormalization::kLinear;
+  double threshold = 0.0;
+  double threshold_quantile = 0.99;
+  double threshold_margin = 1.5;
+  int max_build_slices = 400;
+  int swap_passes = 10;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("templates_file", templates_file,
+            "template library written by `vigil templates` (empty: the run builds one from a glitch-free "
+            "simulation with seed DeriveSeed(seed, \"templates\"))");
+    v.Field("templates", templates, "k: number of templates (library build)", Bounds::AtLeast(1));
+    v.Field("template_length", template_length, "N: rows per template, <= slice_length (library build)",
+            Bounds::AtLeast(1));
+    v.Field("slice_length", slice_length,
+            "M: samples per slice; bounded latency of the detector (library build)", Bounds::AtLeast(2));
+    v.Field("dims", dims, "d: 3 (acc) or 6 (acc + gyro) channels compared (library build)",
+            Bounds::Closed(3, 6));
+    v.Enum("normalization", normalization, SliceNormalizationNames(),
+           "per-channel normalization of slices and templates before comparing: none, median (subtract the "
+           "median), linear (subtract the robust line through the medians of both halves) (library build)");
+    v.Field("threshold", threshold,
+            "DTW distance above which a slice is abnormal (0: the library's calibrated one)",
+            Bounds::NonNegative());
+    v.Field("threshold_quantile", threshold_quantile,
+            "calibration: quantile of the best-template distances of clean slices (library build)",
+            Bounds::Probability());
+    v.Field("threshold_margin", threshold_margin,
+            "calibration: threshold = margin x that quantile (library build)", Bounds::AtLeast(1.0));
+    v.Field("max_build_slices", max_build_slices,
+            "library build: at most this many clean slices (evenly spread) are clustered",
+            Bounds::AtLeast(1));
+    v.Field("swap_passes", swap_passes, "library build: k-medoids swap passes after the greedy start",
+            Bounds::NonNegative());
+  }
+};
+
+// Hampel filter per axis: over a centred window of 2 h + 1 samples, sigma = 1.4826 MAD; a value farther than
+// n_sigma sigma from the window median is abnormal and replaced by the median.
+// The defaults (h = 10, n_sigma = 5) are wider than the textbook 3 sigma: the MAD of a short window is a
+// noisy, low-biased scale estimate and six axes are tested per sample, so 3 sigma flags several percent of
+// clean samples (measured on the paper's noise levels); 5 sigma keeps false alarms near 0.5 %.
+struct HampelOptions {
+  int half_window = 10;
+  double n_sigma = 5.0;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("half_window", half_window, "h: the window is 2 h + 1 samples; latency h samples",
+            Bounds::AtLeast(1));
+    v.Field("n_sigma", n_sigma, "abnormal beyond n_sigma x 1.4826 MAD from the median", Bounds::Positive());
+  }
+};
+
 struct DetectorOptions {
   DetectorType type = DetectorType::kNone;
+  ThresholdOptions threshold;
+  DtwOptions dtw;
+  HampelOptions hampel;
 
   template <class V>
   void Visit(V& v) {
     v.Enum("type", type, DetectorTypeNames(), "glitch detector + mitigation applied to the IMU stream");
+    v.Section("threshold", threshold, "threshold detector (the paper's trunc)");
+    v.Section("dtw", dtw, "DTW template detector (the paper's dtw)");
+    v.Section("hampel", hampel, "Hampel filter (rolling median / MAD)");
   }
 };
 

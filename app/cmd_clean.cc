@@ -1,0 +1,123 @@
+// `vigil clean`: runs a detector + mitigation over an IMU CSV and writes the cleaned IMU, the per-sample
+// flags and detection statistics (against glitches.csv / imu_clean.csv when they sit beside the input).
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "app/detector_args.h"
+#include "core/dataset.h"
+#include "core/error.h"
+#include "core/output.h"
+#include "detectors/detection_metrics.h"
+#include "detectors/detector.h"
+#include "detectors/template_library.h"
+
+namespace vigil::app {
+namespace {
+
+// imu_clean.csv must describe the same samples as imu.csv.
+void CheckSameSamples(const ImuStream& imu, const ImuStream& clean, const std::string& clean_path) {
+  if (clean.size() != imu.size())
+    throw InputError(clean_path + ": " + std::to_string(clean.size()) + " samples, but the input has " +
+                     std::to_string(imu.size()));
+  for (std::size_t t = 0; t < imu.size(); ++t)
+    if (clean[t].t_ns != imu[t].t_ns)
+      throw InputError(Located(clean_path, static_cast<int>(t) + 2,
+                               "timestamp " + std::to_string(clean[t].t_ns) + " differs from the input's " +
+                                   std::to_string(imu[t].t_ns)));
+}
+
+}  // namespace
+
+void AddCleanCommand(CLI::App& root) {
+  auto* cmd =
+      root.add_subcommand("clean",
+                          "run a glitch detector + mitigation on DATASET/imu.csv (or an imu0 CSV path); "
+                          "writes DIR/imu.csv, DIR/detections.csv, DIR/detection.json, DIR/config.yaml");
+  struct Args {
+    std::string dataset, output, detector, templates;
+    DetectorArgs overrides;
+    bool force = false;
+  };
+  auto args = std::make_shared<Args>();
+  std::string names;
+  for (const auto& [name, type] : detectors::DetectorTypeNames()) names += (names.empty() ? "" : ", ") + name;
+  cmd->add_option("DATASET", args->dataset, "dataset directory or EuRoC imu0 CSV file")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "output directory (must not exist or be empty, unless --force)")
+      ->required();
+  cmd->add_option("--detector", args->detector, "detector: " + names)->required();
+  cmd->add_option("--templates", args->templates,
+                  "DTW template library (from `vigil templates`); required for dtw");
+  args->overrides.AddTo(cmd);
+  cmd->add_flag("--force", args->force, "replace a non-empty output directory");
+  SetAction(cmd, [args] {
+    detectors::DetectorOptions options = args->overrides.Resolve();
+    bool known = false;
+    for (const auto& [name, type] : detectors::DetectorTypeNames())
+      if (name == args->detector) options.type = type, known = true;
+    if (!known) throw InputError("--detector: unknown detector '" + args->detector + "'");
+    if (!args->templates.empty()) options.dtw.templates_file = args->templates;
+
+    // Read everything before writing anything.
+    const ImuInput input = ResolveImuInput(args->dataset, dataset_files::kImu);
+    const ImuStream raw = ReadImuCsv(input.imu.string());
+    std::unique_ptr<detectors::TemplateLibrary> library;
+    if (options.type == detectors::DetectorType::kDtw) {
+      if (options.dtw.templates_file.empty())
+        throw InputError(
+            "--templates: the dtw detector needs a template library built from clean data of another "
+            "recording "
+            "(`vigil templates OTHER_DATASET -o templates.yaml`); this input's imu_clean.csv is not used, it "
+            "would leak the answer");
+      library = std::make_unique<detectors::TemplateLibrary>(
+          detectors::ReadTemplateLibrary(options.dtw.templates_file));
+    }
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path clean_path = input.dir / dataset_files::kImuClean;
+    const fs::path glitches_path = input.dir / dataset_files::kGlitches;
+    const bool has_clean = fs::exists(clean_path, ec), has_glitches = fs::exists(glitches_path, ec);
+    ImuStream imu_clean;
+    std::vector<GlitchRecord> glitches;
+    if (has_clean) {
+      imu_clean = ReadImuCsv(clean_path.string());
+      CheckSameSamples(raw, imu_clean, clean_path.string());
+    }
+    if (has_glitches) glitches = ReadGlitchesCsv(glitches_path.string());
+
+    const detectors::DetectionResult result = detectors::DetectAndMitigate(options, raw, library.get());
+    const detectors::DetectionMetrics metrics =
+        detectors::EvaluateDetection(raw, result, glitches, imu_clean);
+
+    nlohmann::json json;
+    json["detector"] = args->detector;
+    json["input"] = input.imu.string();
+    if (library) {
+      json["templates"] = options.dtw.templates_file;
+      json["dtw_threshold"] = options.dtw.threshold > 0 ? options.dtw.threshold : library->threshold;
+    }
+    json.update(detectors::DetectionJson(metrics, has_glitches, has_clean));
+
+    StagedDirectory out(args->output, args->force);
+    WriteFileAtomic(out.path() / dataset_files::kImu, ImuCsv(result.cleaned));
+    WriteFileAtomic(out.path() / "detections.csv", detectors::DetectionsCsv(raw, result.flagged));
+    WriteFileAtomic(out.path() / "config.yaml", DetectorConfigYaml(options));
+    WriteFileAtomic(out.path() / "detection.json", json.dump(2) + "\n");
+    out.Commit();
+    std::fprintf(stderr, "vigil clean: %s flagged %lld of %lld samples in %lld segments",
+                 args->detector.c_str(), static_cast<long long>(metrics.flagged_samples),
+                 static_cast<long long>(metrics.samples), static_cast<long long>(metrics.flagged_segments));
+    if (has_glitches)
+      std::fprintf(stderr, "; precision %.3f recall %.3f F1 %.3f", metrics.precision, metrics.recall,
+                   metrics.f1);
+    if (has_clean)
+      std::fprintf(stderr, "; IMU RMS vs clean %.4g -> %.4g", metrics.imu_rmse_raw, metrics.imu_rmse_cleaned);
+    std::fprintf(stderr, "\n");
+    return 0;
+  });
+}
+
+}  // namespace vigil::app
