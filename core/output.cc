@@ -70,6 +70,10 @@ void PrepareOutputDirectory(const fs::path& dir, bool force) {
 }
 
 void WriteFileAtomic(const fs::path& path, const std::string& content) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError(path.string() + ": exists and is not a regular file; refusing to replace it");
   fs::path tmp = path;
   tmp += PidSuffix();
   {

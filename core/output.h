@@ -33,7 +33,9 @@ class StagedDirectory {
 // Refuses (InputError) a non-empty existing directory unless `force`; otherwise creates it if missing.
 void PrepareOutputDirectory(const std::filesystem::path& dir, bool force);
 
-// Writes `content` to `path` via "<path>.tmp-<pid>" + rename. Throws std::runtime_error on I/O failure.
+// Writes `content` to `path` via "<path>.tmp-<pid>" + rename. Refuses (InputError) to replace anything that
+// is not a regular file (a directory, a device such as /dev/null, a FIFO). Throws std::runtime_error on I/O
+// failure.
 void WriteFileAtomic(const std::filesystem::path& path, const std::string& content);
 
 // Reads a whole file; InputError "path: cannot open for reading" if it cannot.

@@ -56,7 +56,19 @@ TEST(Output, AFileInTheWayIsRefusedEvenWhenForced) {
   TempDir tmp;
   const fs::path out = tmp.path() / "file";
   WriteFileAtomic(out, "x");
-  EXPECT_EQ(InputErrorOf([&] { StagedDirectory s(out, true); }), out.string() + ": exists and is not a directory");
+  EXPECT_EQ(InputErrorOf([&] { StagedDirectory s(out, true); }),
+            out.string() + ": exists and is not a directory");
+}
+
+TEST(Output, WriteFileAtomicNeverReplacesANonRegularFile) {
+  TempDir tmp;
+  const fs::path dir = tmp.path() / "a_directory";
+  fs::create_directory(dir);
+  EXPECT_EQ(InputErrorOf([&] { WriteFileAtomic(dir, "x"); }),
+            dir.string() + ": exists and is not a regular file; refusing to replace it");
+  EXPECT_TRUE(fs::is_directory(dir));
+  EXPECT_FALSE(InputErrorOf([&] { WriteFileAtomic("/dev/null", "x"); }).empty());
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 }  // namespace

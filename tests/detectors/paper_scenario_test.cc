@@ -1,6 +1,5 @@
 // The detectors on the paper's simulation scenario (ellipse, 20 s, IMU 200 Hz, glitches on acc z at rate
 // 0.01): templates from a glitch-free run with seed 1000, judged on runs with other seeds.
-#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -95,22 +94,11 @@ sim::SimOptions RescueCourse(bool glitches) {
   return options;
 }
 
-// The rescue course run, or nothing (with the reason) when this build's simulator does not have it yet.
-std::optional<Dataset> SimulateRescue(bool glitches, uint64_t seed, std::string* why) {
-  try {
-    return sim::Simulate(RescueCourse(glitches), seed);
-  } catch (const InputError& e) {
-    *why = e.what();
-    return std::nullopt;
-  }
-}
-
 TEST(RescueCourse, LegitimateBumpsRaiseFewFalseAlarmsAndGlitchesAreStillFound) {
-  std::string why;
-  const std::optional<Dataset> templates_run = SimulateRescue(false, 1000, &why);
-  if (!templates_run) GTEST_SKIP() << "rescue course not available in this build: " << why;
-  const TemplateLibrary library = BuildTemplates(templates_run->imu_clean, {});
-  const Dataset clean = *SimulateRescue(false, 1, &why), glitched = *SimulateRescue(true, 1, &why);
+  const Dataset templates_run = sim::Simulate(RescueCourse(false), 1000);
+  const TemplateLibrary library = BuildTemplates(templates_run.imu_clean, {});
+  const Dataset clean = sim::Simulate(RescueCourse(false), 1),
+                glitched = sim::Simulate(RescueCourse(true), 1);
   for (DetectorType type : {DetectorType::kThreshold, DetectorType::kDtw, DetectorType::kHampel}) {
     DetectorOptions options;
     options.type = type;
