@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/config.h"
+#include "estimator/init/vins_init_options.h"
 
 namespace vigil::estimator {
 
@@ -128,6 +129,7 @@ struct FailureOptions {
 struct EstimatorOptions {
   InitMode init = InitMode::kGroundTruth;
   GroundTruthInitOptions groundtruth_init;
+  VinsInitOptions vins;
   WindowOptions window;
   FeatureOptions features;
   SolverOptions solver;
@@ -140,6 +142,7 @@ struct EstimatorOptions {
            "initialization: groundtruth (first window from ground truth) or vins (visual-inertial, no ground "
            "truth)");
     v.Section("groundtruth_init", groundtruth_init, "perturbation of the ground-truth initialization");
+    v.Section("vins", vins, "visual-inertial initialization (init: vins)");
     v.Section("window", window, "sliding window and keyframe decision");
     v.Section("features", features, "feature tracks: triangulation, reprojection noise, outliers");
     v.Section("solver", solver, "Ceres solve per frame");

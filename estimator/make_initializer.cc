@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "estimator/ground_truth_initializer.h"
+#include "estimator/init/vins_initializer.h"
 
 namespace vigil::estimator {
 
@@ -14,10 +15,9 @@ std::unique_ptr<Initializer> MakeInitializer(const EstimatorOptions& options, co
       return std::make_unique<GroundTruthInitializer>(input.groundtruth, options.groundtruth_init,
                                                       input.seed);
     case InitMode::kVins:
-      // The visual-inertial initializer (estimator/init/) plugs in here.
-      break;
+      return std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2);
   }
-  throw InputError("estimator.init: this initialization is not available in this build");
+  throw InputError("estimator.init: unknown initialization mode");
 }
 
 }  // namespace vigil::estimator
