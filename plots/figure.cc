@@ -31,6 +31,11 @@ Axes3D& Figure::AddAxes3D(int row, int col, int row_span, int col_span) {
   return Add<Axes3D>(row, col, row_span, col_span);
 }
 
+Axes* Figure::axes(int index) {
+  if (index < 0 || index >= static_cast<int>(panels_.size())) return nullptr;
+  return dynamic_cast<Axes*>(panels_[index].panel.get());
+}
+
 Rect Figure::CellRect(int width, int height, int row, int col, int row_span, int col_span) const {
   const Style style = Style::ForSize(width, height);
   const double margin = 2.0 * style.pad_px();

@@ -29,6 +29,8 @@ class Figure {
   Rect CellRect(int width, int height, int row, int col, int row_span = 1, int col_span = 1) const;
 
   const std::string& title() const { return title_; }
+  // The index-th panel added, as 2-D axes (null when it is a 3-D view or out of range).
+  Axes* axes(int index);
 
  private:
   struct Placed {
