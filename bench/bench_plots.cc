@@ -14,10 +14,11 @@ namespace {
 
 const std::filesystem::path& SweepDir() {
   static const std::filesystem::path dir = [] {
-    const auto path = std::filesystem::temp_directory_path() / ("vigil_bench_plots_" + std::to_string(::getpid()));
+    const auto path =
+        std::filesystem::temp_directory_path() / ("vigil_bench_plots_" + std::to_string(::getpid()));
     std::filesystem::remove_all(path);
-    vigil::plots::testing::WriteSyntheticSweep(path, {{true, 1.0, 0.5}, {true, 2.0, 1.0}, {true, 4.0, 2.0}}, 10,
-                                               20.0);
+    vigil::plots::testing::WriteSyntheticSweep(path, {{true, 1.0, 0.5}, {true, 2.0, 1.0}, {true, 4.0, 2.0}},
+                                               10, 20.0);
     return path;
   }();
   return dir;

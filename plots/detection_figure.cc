@@ -52,8 +52,10 @@ Figure DetectionFigure(const DetectionTrace& trace) {
   const std::string y_label = trace.axis_name + " [" + trace.unit + "]";
 
   Axes& whole = figure.AddAxes(0, 0);
-  whole.title = "whole run (excerpt below: " + std::to_string(trace.excerpt_t0_s).substr(0, 5) + " to " +
-                std::to_string(trace.excerpt_t1_s).substr(0, 5) + " s)";
+  char whole_title[96];
+  std::snprintf(whole_title, sizeof whole_title, "whole run (shaded: the excerpt below, %.2f to %.2f s)",
+                trace.excerpt_t0_s, trace.excerpt_t1_s);
+  whole.title = whole_title;
   whole.y_label = y_label;
   ShadeFlagged(&whole, trace, -1e300, 1e300, span_color);
   whole.Line(trace.t_s, trace.raw, PaletteColor(6), "raw", 0.5);

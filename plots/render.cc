@@ -129,7 +129,11 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
     error_rows.push_back(RelativeErrorRowOfRuns(setting.Label(), all));
   }
   writer.Write("fig2_glitches.png", GlitchFigure(traces));
-  writer.Write("fig3_trajectories.png", TrajectoryFigure(trajectory_rows));
+  // Trajectories only when some run kept them (a sweep may disable writing them).
+  if (std::any_of(trajectory_rows.begin(), trajectory_rows.end(),
+                  [](const TrajectoryPanel& p) { return !p.estimates.empty(); })) {
+    writer.Write("fig3_trajectories.png", TrajectoryFigure(trajectory_rows));
+  }
   writer.Write(
       "fig4_relative_error.png",
       RelativeErrorFigure(error_rows, "box: quartiles over runs of each run's mean error, whiskers 1.5 IQR"));

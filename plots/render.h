@@ -5,8 +5,9 @@
 // Bad or missing input throws InputError naming the file.
 //
 // Figure files: fig1_scenario.png, fig2_glitches.png, fig3_trajectories.png, fig4_relative_error.png,
-// fig5_detection.png, fig6_summary.png (a run directory gets 1-5 as far as its data allows; a dataset
-// directory 1 and 2).
+// fig5_detection.png, fig6_summary.png. A sweep gets all six (3 only when some run kept its trajectories, 5
+// only when some run used a detector); a run directory 1-5 as far as its data allows (3 needs the
+// trajectories, 4 metrics.json, 5 a detector); a dataset directory 1 and 2.
 #pragma once
 
 #include <filesystem>
