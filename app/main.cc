@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddPlotCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   for (const CLI::App* cmd : root.get_subcommands()) {
+    // Nested subcommands (`vigil plot run`): the action sits on the innermost parsed one.
+    while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
     auto it = Actions().find(cmd);
     if (it == Actions().end()) continue;
     try {

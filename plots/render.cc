@@ -1,0 +1,181 @@
+#include "plots/render.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "core/dataset.h"
+#include "core/error.h"
+#include "plots/figure_data.h"
+#include "plots/gl_context.h"
+#include "sim/simulator.h"
+
+namespace vigil::plots {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One GL context and font for all figures of a call, and the files written so far.
+class FigureWriter {
+ public:
+  FigureWriter(const fs::path& out_dir, const FigureOptions& options)
+      : out_dir_(out_dir), options_(options), text_(options.font_file) {
+    std::error_code ec;
+    fs::create_directories(out_dir_, ec);
+    if (!fs::is_directory(out_dir_))
+      throw InputError(out_dir_.string() + ": cannot create the output directory");
+  }
+
+  void Write(const std::string& name, Figure figure) {
+    const fs::path path = out_dir_ / name;
+    WritePng(path, figure.Render(&gl_, &text_, options_.width, options_.height));
+    written_.push_back(path);
+  }
+
+  std::vector<fs::path> written() const { return written_; }
+
+ private:
+  fs::path out_dir_;
+  FigureOptions options_;
+  GlContext gl_;
+  TextRenderer text_;
+  std::vector<fs::path> written_;
+};
+
+Dataset Resimulate(const RunData& run) { return sim::Simulate(run.config.sim, run.config.seed); }
+
+// The run with the smallest seed (then id) among those `keep` accepts; null when none.
+template <class Pred>
+const RunData* FirstRun(const SweepData& sweep, Pred keep) {
+  const RunData* best = nullptr;
+  for (const RunData& run : sweep.runs) {
+    if (!keep(run)) continue;
+    if (best == nullptr || run.config.seed < best->config.seed) best = &run;
+  }
+  return best;
+}
+
+std::string RunTitle(const RunData& run) {
+  return "run " + run.id + " (" + run.method + ", " + run.glitch.Label() + ", seed " +
+         std::to_string(run.config.seed) + ")";
+}
+
+}  // namespace
+
+void ValidateFigureOptions(const FigureOptions& options) {
+  if (options.width < 200 || options.width > 8000) throw InputError("--width: must be in [200, 8000]");
+  if (options.height < 200 || options.height > 8000) throw InputError("--height: must be in [200, 8000]");
+  if (!(options.detection_excerpt_s > 0.0)) throw InputError("detection_excerpt_s: must be positive");
+  if (!fs::is_regular_file(options.font_file)) {
+    throw InputError(options.font_file + ": font file missing (install fonts-dejavu-core)");
+  }
+}
+
+std::vector<fs::path> RenderRunFigures(const fs::path& run_dir, const fs::path& out_dir,
+                                       const FigureOptions& options) {
+  ValidateFigureOptions(options);
+  const RunData run = LoadRunDirectory(run_dir);
+  const Dataset data = Resimulate(run);
+  FigureWriter writer(out_dir, options);
+  writer.Write("fig1_scenario.png", ScenarioFigure(ScenarioDataOf(data, "Scenario of " + RunTitle(run))));
+  writer.Write("fig2_glitches.png",
+               GlitchFigure({ImuTraceOf(data, GlitchedAxis(run.config), run.glitch.Label())}));
+  if (!run.groundtruth.empty()) {
+    writer.Write("fig3_trajectories.png", TrajectoryFigure({TrajectoryPanelOf(run.glitch.Label(), {&run})}));
+  }
+  const RelativeErrorRow row = RelativeErrorRowOfRun(run.glitch.Label(), run);
+  if (!row.methods.empty()) {
+    writer.Write("fig4_relative_error.png",
+                 RelativeErrorFigure({row}, "box: mean ± std of the run's segments, whiskers: min and max"));
+  }
+  if (run.config.detector.type != detectors::DetectorType::kNone) {
+    writer.Write("fig5_detection.png",
+                 DetectionFigure(DetectionTraceOf(run, data, options.detection_excerpt_s)));
+  }
+  return writer.written();
+}
+
+std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const FigureOptions& options) {
+  return RenderSweepFigures(sweep_dir, sweep_dir / "figures", options);
+}
+
+std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::path& out_dir,
+                                         const FigureOptions& options) {
+  ValidateFigureOptions(options);
+  const SweepData sweep = LoadSweepDirectory(sweep_dir);
+  FigureWriter writer(out_dir, options);
+
+  const RunData* first = FirstRun(sweep, [](const RunData&) { return true; });
+  writer.Write("fig1_scenario.png",
+               ScenarioFigure(ScenarioDataOf(Resimulate(*first), "Simulated trajectory and landmarks")));
+
+  std::vector<ImuTrace> traces;
+  std::vector<TrajectoryPanel> trajectory_rows;
+  std::vector<RelativeErrorRow> error_rows;
+  for (const GlitchSetting& setting : sweep.settings) {
+    const RunData* rep = FirstRun(sweep, [&](const RunData& r) { return r.glitch == setting; });
+    traces.push_back(ImuTraceOf(Resimulate(*rep), GlitchedAxis(rep->config), setting.Label()));
+    std::vector<const RunData*> per_method, all;
+    for (const std::string& method : sweep.methods) {
+      const RunData* r = FirstRun(sweep, [&](const RunData& x) {
+        return x.glitch == setting && x.method == method && x.ok() && !x.estimate.empty();
+      });
+      if (r != nullptr) per_method.push_back(r);
+    }
+    for (const RunData& r : sweep.runs) {
+      if (r.glitch == setting) all.push_back(&r);
+    }
+    trajectory_rows.push_back(TrajectoryPanelOf(setting.Label(), per_method));
+    error_rows.push_back(RelativeErrorRowOfRuns(setting.Label(), all));
+  }
+  writer.Write("fig2_glitches.png", GlitchFigure(traces));
+  // Trajectories only when some run kept them (a sweep may disable writing them).
+  if (std::any_of(trajectory_rows.begin(), trajectory_rows.end(),
+                  [](const TrajectoryPanel& p) { return !p.estimates.empty(); })) {
+    writer.Write("fig3_trajectories.png", TrajectoryFigure(trajectory_rows));
+  }
+  writer.Write(
+      "fig4_relative_error.png",
+      RelativeErrorFigure(error_rows, "box: quartiles over runs of each run's mean error, whiskers 1.5 IQR"));
+
+  // Detection: the strongest glitch setting, DTW when the sweep has it, else any detector.
+  const RunData* detected = nullptr;
+  for (auto it = sweep.settings.rbegin(); it != sweep.settings.rend() && detected == nullptr; ++it) {
+    for (const char* preferred : {"dtw", ""}) {
+      if (detected != nullptr) break;
+      detected = FirstRun(sweep, [&](const RunData& r) {
+        return r.glitch == *it && r.config.detector.type != detectors::DetectorType::kNone &&
+               (preferred[0] == '\0' || r.method == preferred);
+      });
+    }
+  }
+  if (detected != nullptr) {
+    writer.Write("fig5_detection.png", DetectionFigure(DetectionTraceOf(*detected, Resimulate(*detected),
+                                                                        options.detection_excerpt_s)));
+  }
+
+  std::vector<std::string> labels;
+  for (const GlitchSetting& s : sweep.settings) labels.push_back(s.Label());
+  writer.Write("fig6_summary.png", SummaryFigure(labels, sweep.methods, SummaryCellsOf(sweep)));
+  return writer.written();
+}
+
+std::vector<fs::path> RenderDatasetFigures(const fs::path& dataset_dir, const fs::path& out_dir,
+                                           const FigureOptions& options) {
+  ValidateFigureOptions(options);
+  const Dataset data = ReadDataset(dataset_dir);
+  ImuAxis axis = ImuAxis::kAz;
+  std::string label = "IMU";
+  if (fs::is_regular_file(dataset_dir / "config.yaml")) {
+    const experiments::RunConfig config = experiments::LoadRunConfig((dataset_dir / "config.yaml").string());
+    axis = GlitchedAxis(config);
+    label = GlitchSettingOf(config).Label();
+  }
+  FigureWriter writer(out_dir, options);
+  writer.Write("fig1_scenario.png",
+               ScenarioFigure(ScenarioDataOf(data, "Scenario of " + dataset_dir.filename().string())));
+  writer.Write("fig2_glitches.png", GlitchFigure({ImuTraceOf(data, axis, label)}));
+  return writer.written();
+}
+
+}  // namespace vigil::plots

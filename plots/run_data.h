@@ -1,0 +1,70 @@
+// What the figures read from run, sweep and dataset directories (formats.md), loaded through the contract
+// only.
+//
+// A run is classified by its own config.yaml: the method is the detector (threshold -> "trunc", dtw -> "dtw",
+// none -> "original", others by their name) and the glitch setting is (glitch.enabled, glitch.mean,
+// glitch.std). Sweep runs are grouped by these, never by parsing run ids.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/types.h"
+#include "experiments/run_config.h"
+
+namespace vigil::plots {
+
+// The paper's name of a detector: threshold -> "trunc", dtw -> "dtw", none -> "original", else its type name.
+std::string MethodName(detectors::DetectorType type);
+// Order of methods in legends: original, trunc, dtw, then the others alphabetically.
+bool MethodBefore(const std::string& a, const std::string& b);
+
+struct GlitchSetting {
+  bool enabled = false;
+  double mean = 0.0;
+  double std = 0.0;
+
+  // "no glitches" or "μ = 2, σ = 1" (units of the glitched axes).
+  std::string Label() const;
+  bool operator<(const GlitchSetting& o) const;
+  bool operator==(const GlitchSetting& o) const;
+};
+GlitchSetting GlitchSettingOf(const experiments::RunConfig& config);
+
+struct RunData {
+  std::filesystem::path dir;
+  std::string id;  // the directory's name
+  experiments::RunConfig config;
+  std::string method;
+  GlitchSetting glitch;
+  Trajectory groundtruth;               // stamped_groundtruth.txt (empty when absent)
+  Trajectory estimate;                  // stamped_traj_estimate.txt (empty when absent)
+  nlohmann::json metrics;               // metrics.json (null when absent)
+  std::vector<int64_t> detection_t_ns;  // detections.csv (empty when absent)
+  std::vector<uint8_t> flagged;
+
+  bool ok() const { return metrics.is_object() && metrics.value("status", "") == "ok"; }
+};
+
+// Reads a run directory; config.yaml is required, the other files are optional. Bad files throw InputError.
+RunData LoadRunDirectory(const std::filesystem::path& dir);
+
+struct SweepData {
+  std::filesystem::path dir;
+  std::vector<RunData> runs;            // runs/<id>/ in id order
+  std::vector<GlitchSetting> settings;  // distinct settings, sorted
+  std::vector<std::string> methods;     // distinct methods, MethodBefore order
+};
+
+// Reads every run directory under dir/runs (entries without config.yaml, e.g. unfinished temporaries, are
+// skipped). InputError when dir/runs does not exist or holds no run.
+SweepData LoadSweepDirectory(const std::filesystem::path& dir);
+
+// Reads detections.csv ("#timestamp [ns],flagged").
+void ReadDetectionsCsv(const std::string& path, std::vector<int64_t>* t_ns, std::vector<uint8_t>* flagged);
+
+}  // namespace vigil::plots

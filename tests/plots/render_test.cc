@@ -1,0 +1,141 @@
+// Figures of synthetic run, sweep and dataset directories: files, sizes, content, determinism, errors.
+#include "plots/render.h"
+
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "core/output.h"
+#include "plots/image.h"
+#include "sim/simulator.h"
+#include "tests/core/test_util.h"
+#include "tests/plots/synthetic_runs.h"
+
+namespace vigil::plots {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Decodes `path`, checks its size and that it is not blank (many colours, a good share of non-white pixels).
+void ExpectRealFigure(const fs::path& path, int width, int height) {
+  SCOPED_TRACE(path.string());
+  const Image image = DecodePng(ReadFile(path));
+  ASSERT_EQ(image.width, width);
+  ASSERT_EQ(image.height, height);
+  std::size_t non_white = 0;
+  std::vector<bool> seen(1 << 15, false);
+  int colours = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+    const uint8_t r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+    if (r < 250 || g < 250 || b < 250) ++non_white;
+    const int key = (r >> 3) << 10 | (g >> 3) << 5 | (b >> 3);
+    if (!seen[key]) {
+      seen[key] = true;
+      ++colours;
+    }
+  }
+  EXPECT_GT(non_white, image.rgba.size() / 4 / 100);  // > 1 % ink
+  EXPECT_GT(colours, 20);                             // lines, text anti-aliasing, several series
+}
+
+std::vector<std::string> Names(const std::vector<fs::path>& paths) {
+  std::vector<std::string> names;
+  for (const auto& p : paths) names.push_back(p.filename().string());
+  return names;
+}
+
+FigureOptions Small() {
+  FigureOptions options;
+  options.width = 640;
+  options.height = 400;
+  return options;
+}
+
+TEST(RenderSweep, WritesAllSixFiguresDeterministically) {
+  vigil::testing::TempDir tmp;
+  testing::WriteSyntheticSweep(tmp.path() / "sweep", {{true, 1.0, 0.5}, {true, 4.0, 2.0}}, 2, 4.0);
+  const auto written = RenderSweepFigures(tmp.path() / "sweep", Small());
+  EXPECT_EQ(Names(written),
+            (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png", "fig3_trajectories.png",
+                                      "fig4_relative_error.png", "fig5_detection.png", "fig6_summary.png"}));
+  for (const auto& p : written) {
+    EXPECT_EQ(p.parent_path(), tmp.path() / "sweep" / "figures");
+    ExpectRealFigure(p, 640, 400);
+  }
+  // VIGIL_PLOTS_TEST_OUTPUT=DIR keeps full-size figures of this sweep for a look.
+  if (const char* keep = std::getenv("VIGIL_PLOTS_TEST_OUTPUT")) {
+    RenderSweepFigures(tmp.path() / "sweep", fs::path(keep) / "sweep", FigureOptions());
+  }
+  // Same input, same bytes.
+  const std::string before = ReadFile(written[5]) + ReadFile(written[2]);
+  const auto again = RenderSweepFigures(tmp.path() / "sweep", tmp.path() / "again", Small());
+  EXPECT_EQ(ReadFile(again[5]) + ReadFile(again[2]), before);
+  // No temporary files left beside the figures.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(tmp.path() / "sweep" / "figures"))
+    files += entry.is_regular_file();
+  EXPECT_EQ(files, 6);
+}
+
+TEST(RenderSweep, DefaultSizeIs1600By1000) {
+  vigil::testing::TempDir tmp;
+  testing::WriteSyntheticSweep(tmp.path() / "sweep", {{false, 0.0, 1.0}}, 1, 3.0);
+  const FigureOptions options;
+  EXPECT_EQ(options.width, 1600);
+  EXPECT_EQ(options.height, 1000);
+  const auto written = RenderSweepFigures(tmp.path() / "sweep", options);
+  ASSERT_FALSE(written.empty());
+  ExpectRealFigure(written.back(), 1600, 1000);
+}
+
+TEST(RenderSweep, RejectsWhatIsNotASweep) {
+  vigil::testing::TempDir tmp;
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { RenderSweepFigures(tmp.path(), Small()); }).find("runs"),
+            std::string::npos);
+  fs::create_directories(tmp.path() / "runs" / "half-written.tmp-1");
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { RenderSweepFigures(tmp.path(), Small()); }).find("no run"),
+            std::string::npos);
+  FigureOptions bad = Small();
+  bad.width = 10;
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { RenderSweepFigures(tmp.path(), bad); }).find("--width"),
+            std::string::npos);
+  bad = Small();
+  bad.font_file = (tmp.path() / "missing.ttf").string();
+  EXPECT_NE(vigil::testing::InputErrorOf([&] { RenderSweepFigures(tmp.path(), bad); }).find("missing.ttf"),
+            std::string::npos);
+}
+
+TEST(RenderRun, WritesFiguresOneToFive) {
+  vigil::testing::TempDir tmp;
+  const auto config = testing::SyntheticConfig({true, 3.0, 1.0}, detectors::DetectorType::kThreshold, 7, 4.0);
+  testing::WriteSyntheticRun(tmp.path() / "run", config, sim::Simulate(config.sim, config.seed));
+  const auto written = RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small());
+  EXPECT_EQ(Names(written),
+            (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png", "fig3_trajectories.png",
+                                      "fig4_relative_error.png", "fig5_detection.png"}));
+  for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+}
+
+TEST(RenderRun, BadMetricsNamesTheFile) {
+  vigil::testing::TempDir tmp;
+  const auto config = testing::SyntheticConfig({false, 0.0, 1.0}, detectors::DetectorType::kNone, 1, 3.0);
+  testing::WriteSyntheticRun(tmp.path() / "run", config, sim::Simulate(config.sim, config.seed));
+  WriteFileAtomic(tmp.path() / "run" / "metrics.json", "{ not json");
+  EXPECT_NE(vigil::testing::InputErrorOf([&] {
+              RenderRunFigures(tmp.path() / "run", tmp.path() / "f", Small());
+            }).find("metrics.json"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(tmp.path() / "f" / "fig1_scenario.png"));
+}
+
+TEST(RenderDataset, WritesScenarioAndGlitches) {
+  vigil::testing::TempDir tmp;
+  auto config = testing::SyntheticConfig({true, 2.0, 1.0}, detectors::DetectorType::kNone, 3, 3.0);
+  sim::SimulateToDirectory(config.sim, config.seed, config::ToYaml(config), tmp.path() / "data", false);
+  const auto written = RenderDatasetFigures(tmp.path() / "data", tmp.path() / "figs", Small());
+  EXPECT_EQ(Names(written), (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png"}));
+  for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+}
+
+}  // namespace
+}  // namespace vigil::plots

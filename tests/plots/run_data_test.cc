@@ -1,0 +1,80 @@
+#include "plots/run_data.h"
+
+#include <gtest/gtest.h>
+
+#include "plots/figure_data.h"
+#include "plots/trajectory_alignment.h"
+#include "tests/core/test_util.h"
+#include "tests/plots/synthetic_runs.h"
+
+namespace vigil::plots {
+namespace {
+
+TEST(RunData, SweepRunsAreGroupedByTheirOwnConfig) {
+  vigil::testing::TempDir tmp;
+  testing::WriteSyntheticSweep(tmp.path(), {{true, 4.0, 2.0}, {true, 1.0, 0.5}}, 2, 2.0);
+  const SweepData sweep = LoadSweepDirectory(tmp.path());
+  ASSERT_EQ(sweep.runs.size(), 12u);
+  EXPECT_EQ(sweep.methods, (std::vector<std::string>{"original", "trunc", "dtw"}));
+  ASSERT_EQ(sweep.settings.size(), 2u);
+  EXPECT_EQ(sweep.settings[0].mean, 1.0);  // sorted, whatever the run ids say
+  EXPECT_EQ(sweep.settings[1].Label(), "μ = 4, σ = 2");
+  int failed = 0;
+  for (const RunData& r : sweep.runs) failed += !r.ok();
+  EXPECT_EQ(failed, 1);
+  const std::vector<SummaryCell> cells = SummaryCellsOf(sweep);
+  ASSERT_EQ(cells.size(), 6u);
+  int total_failed = 0;
+  for (const SummaryCell& c : cells) {
+    EXPECT_EQ(c.ate_trans_m.size() + c.failed, 2u);
+    total_failed += c.failed;
+  }
+  EXPECT_EQ(total_failed, 1);
+}
+
+TEST(RunData, MethodNamesFollowThePaper) {
+  EXPECT_EQ(MethodName(detectors::DetectorType::kThreshold), "trunc");
+  EXPECT_EQ(MethodName(detectors::DetectorType::kDtw), "dtw");
+  EXPECT_EQ(MethodName(detectors::DetectorType::kNone), "original");
+  EXPECT_EQ(MethodName(detectors::DetectorType::kHampel), "hampel");
+  EXPECT_TRUE(MethodBefore("original", "dtw"));
+  EXPECT_TRUE(MethodBefore("dtw", "hampel"));
+}
+
+TEST(RunData, DetectionsCsvIsValidated) {
+  vigil::testing::TempDir tmp;
+  std::vector<int64_t> t;
+  std::vector<uint8_t> f;
+  ReadDetectionsCsv(tmp.File("ok.csv", "#timestamp [ns],flagged\n10,0\n20,1\n"), &t, &f);
+  EXPECT_EQ(t, (std::vector<int64_t>{10, 20}));
+  EXPECT_EQ(f, (std::vector<uint8_t>{0, 1}));
+  EXPECT_NE(vigil::testing::InputErrorOf([&] {
+              ReadDetectionsCsv(tmp.File("bad.csv", "#timestamp [ns],flagged\n10,0\n20,2\n"), &t, &f);
+            }).find("bad.csv:3"),
+            std::string::npos);
+}
+
+TEST(TrajectoryAlignment, PosYawUndoesAYawAndATranslation) {
+  Trajectory gt, est;
+  const Eigen::AngleAxisd yaw(0.7, Eigen::Vector3d::UnitZ());
+  for (int i = 0; i < 50; ++i) {
+    const double t = i * 0.1;
+    const Eigen::Vector3d p(std::cos(t) * 5, std::sin(2 * t) * 3, 0.2 * t);
+    gt.push_back({i * 100'000'000LL, p, Eigen::Quaterniond::Identity()});
+    if (i >= 5)
+      est.push_back({i * 100'000'000LL + 1000, yaw * p + Eigen::Vector3d(1, 2, 3), Eigen::Quaterniond(yaw)});
+  }
+  const Trajectory aligned = AlignForDisplay(est, gt, experiments::Alignment::kPosYaw);
+  ASSERT_EQ(aligned.size(), 45u);
+  for (std::size_t i = 0; i < aligned.size(); ++i) {
+    EXPECT_NEAR((aligned[i].p_W - gt[i + 5].p_W).norm(), 0.0, 1e-9);
+    EXPECT_NEAR(aligned[i].q_WB.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-9);
+  }
+  const Trajectory se3 = AlignForDisplay(est, gt, experiments::Alignment::kSe3);
+  EXPECT_NEAR((se3.back().p_W - gt.back().p_W).norm(), 0.0, 1e-6);
+  const Trajectory none = AlignForDisplay(est, gt, experiments::Alignment::kNone);
+  EXPECT_NEAR((none.back().p_W - est.back().p_W).norm(), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace vigil::plots
