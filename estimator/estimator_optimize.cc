@@ -1,4 +1,6 @@
 // The window's nonlinear least-squares problem and its Ceres solve.
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -74,6 +76,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
+  if (std::getenv("VIGIL_EST_DEBUG")) std::fprintf(stderr, "%s\n", summary.BriefReport().c_str());
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
     return false;
