@@ -3,6 +3,7 @@
 //   optimize/marginalize build/bench/bench_estimator --accuracy [seeds]   ATE RMSE (posyaw) per seed:
 //   nominal, and N(50,10) glitches
 //                                                    on az at rate 0.01 without a detector
+//   (VIGIL_EST_TRACE=1 also prints the error of every 30th state)
 // The simulation is outside the timed region; counters give per-frame costs in ms and the ATE in m.
 #include <cstdio>
 #include <cstdlib>

@@ -1,6 +1,4 @@
 // The window's nonlinear least-squares problem and its Ceres solve.
-#include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -79,7 +77,6 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
-  if (std::getenv("VIGIL_EST_DEBUG")) std::fprintf(stderr, "%s\n", summary.BriefReport().c_str());
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
     return false;
