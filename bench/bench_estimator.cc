@@ -1,10 +1,11 @@
 // Estimator cost and accuracy on the paper's scenario (ellipse, 36 landmarks, IMU 200 Hz, camera 30 Hz).
-//   build/bench/bench_estimator                      whole 20 s and 200 s runs, per-frame
-//   optimize/marginalize build/bench/bench_estimator --accuracy [seeds]   ATE RMSE (posyaw) per seed:
-//   nominal, and N(50,10) glitches
-//                                                    on az at rate 0.01 without a detector
-//   (VIGIL_EST_TRACE=1 also prints the error of every 30th state)
-// The simulation is outside the timed region; counters give per-frame costs in ms and the ATE in m.
+//   build/bench/bench_estimator
+//       whole 20 s and 200 s runs; counters: per-frame optimize / marginalize cost [ms], ATE [m]
+//   build/bench/bench_estimator --accuracy [seeds [estimator.yaml [nominal]]]
+//       ATE RMSE (posyaw) per seed, nominal and with N(50,10) glitches on az at rate 0.01, no detector;
+//       estimator.yaml holds keys of the `estimator:` section; VIGIL_EST_TRACE=1 prints every 30th state's
+//       error
+// The simulation is outside the timed region.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
