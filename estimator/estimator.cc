@@ -113,6 +113,8 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   const bool full = static_cast<int>(n) >= WindowCapacity();
 
   if (!initialized_) {
+    // Initialization works on a full window (the Initializer contract).
+    if (!full) return FrameStatus::kWaitingForInit;
     const auto start = std::chrono::steady_clock::now();
     const bool ok = TryInitialize();
     timing_.initialize_s += SecondsSince(start);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "core/so3.h"
@@ -115,20 +116,30 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
     A -= Hkm_Hmm_inv * H.topRightCorner(m, n);
     bk -= Hkm_Hmm_inv * b.head(m);
   }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (A + A.transpose()));
-  const Eigen::VectorXd& S = es.eigenvalues();
-  std::vector<int> keep;
-  for (int i = 0; i < n; ++i)
-    if (S[i] > eigen_threshold) keep.push_back(i);
-  if (keep.empty()) return false;
-
-  prior->J.resize(static_cast<int>(keep.size()), n);
-  prior->r.resize(static_cast<int>(keep.size()));
-  for (std::size_t k = 0; k < keep.size(); ++k) {
-    const int i = keep[k];
-    const double s = std::sqrt(S[i]);
-    prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
-    prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
+  // Square-root form of the kept block: Cholesky of A with a ridge of `eigen_threshold` (an information of
+  // 1e-8 is no constraint at all but makes the unobservable gauge directions factorizable), J_p = L^T,
+  // r_p = L^-1 b. Falls back to the eigen-decomposition (eigenvalues below the threshold dropped) if A is not
+  // positive semi-definite enough for that.
+  const Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
+  Eigen::LLT<Eigen::MatrixXd> llt(A_sym + eigen_threshold * Eigen::MatrixXd::Identity(n, n));
+  if (llt.info() == Eigen::Success) {
+    prior->J = llt.matrixU();
+    prior->r = llt.matrixL().solve(bk);
+  } else {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A_sym);
+    const Eigen::VectorXd& S = es.eigenvalues();
+    std::vector<int> keep;
+    for (int i = 0; i < n; ++i)
+      if (S[i] > eigen_threshold) keep.push_back(i);
+    if (keep.empty()) return false;
+    prior->J.resize(static_cast<int>(keep.size()), n);
+    prior->r.resize(static_cast<int>(keep.size()));
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+      const int i = keep[k];
+      const double s = std::sqrt(S[i]);
+      prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
+      prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
+    }
   }
   prior->blocks.clear();
   for (double* address : order_kept) {

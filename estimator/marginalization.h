@@ -3,10 +3,12 @@
 // Marginalize() evaluates every residual block touching the dropped blocks at the current values (robust loss
 // applied as Ceres' corrector does), forms H = J^T J and b = J^T r over all involved blocks (tangent space),
 // eliminates the dropped ones with the Schur complement (pseudo-inverse of H_mm by eigen-decomposition,
-// eigenvalues below `eigen_threshold` dropped), and stores the result as J_p = sqrt(S) V^T and
-// r_p = sqrt(S)^-1 V^T b, so that 1/2 |r_p + J_p dx|^2 reproduces H and b for the kept blocks.
-// MarginalizationFactor evaluates r_p + J_p dx with dx = x - x0 in the tangent space (poses: [p - p0,
-// Log(q0^-1 q)]), with the kept blocks at their current addresses.
+// eigenvalues below `eigen_threshold` dropped), and stores the result in square-root form J_p, r_p with
+// J_p^T J_p = S (+ a ridge of `eigen_threshold`) and J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces
+// the Schur complement S and its gradient b_S for the kept blocks. J_p is the Cholesky factor of S (VINS-Mono
+// stores sqrt(eigenvalues) V^T instead: the same quadratic, at a fraction of the cost). MarginalizationFactor
+// evaluates r_p + J_p dx with dx = x - x0 in the tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept
+// blocks at their current addresses.
 #pragma once
 
 #include <memory>
