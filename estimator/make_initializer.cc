@@ -15,7 +15,8 @@ std::unique_ptr<Initializer> MakeInitializer(const EstimatorOptions& options, co
       return std::make_unique<GroundTruthInitializer>(input.groundtruth, options.groundtruth_init,
                                                       input.seed);
     case InitMode::kVins:
-      return std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2);
+      return std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2,
+                                               options.window.size + 1);
   }
   throw InputError("estimator.init: unknown initialization mode");
 }

@@ -1,5 +1,8 @@
 #include "estimator/init/vins_initializer.h"
 
+#include <algorithm>
+#include <string>
+
 #include "core/so3.h"
 #include "estimator/init/visual_inertial_alignment.h"
 
@@ -11,12 +14,13 @@ constexpr int kGyroBiasIterations = 3;
 }  // namespace
 
 VinsInitializer::VinsInitializer(const VinsInitOptions& options, const CameraModel& camera,
-                                 double gravity_mps2)
+                                 double gravity_mps2, int window_frames)
     : options_(options),
       R_BC_(camera.R_BC()),
       p_BC_(camera.p_BC()),
       fx_(camera.fx),
-      gravity_mps2_(gravity_mps2) {}
+      gravity_mps2_(gravity_mps2),
+      window_frames_(static_cast<std::size_t>(std::max(window_frames, 2))) {}
 
 WindowSfmOptions VinsInitializer::SfmOptions() const {
   WindowSfmOptions sfm;
@@ -35,8 +39,9 @@ WindowSfmOptions VinsInitializer::SfmOptions() const {
 bool VinsInitializer::TryInitialize(const std::vector<InitFrame>& window, InitResult* result) {
   *result = InitResult{};
   const std::size_t n = window.size();
-  if (n < 2) {
-    result->failure_reason = "window has fewer than two frames";
+  if (n < window_frames_) {
+    result->failure_reason =
+        "window not full (" + std::to_string(n) + " of " + std::to_string(window_frames_) + " frames)";
     return false;
   }
   for (std::size_t k = 1; k < n; ++k) {

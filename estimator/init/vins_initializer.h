@@ -1,6 +1,6 @@
 // `estimator.init: vins`: visual-inertial initialization from the window alone (no ground truth).
 //
-// TryInitialize runs, on the full window: the vision-only SfM (window_sfm.h: reference frame by
+// TryInitialize runs, once the window is full: the vision-only SfM (window_sfm.h: reference frame by
 // correspondences and parallax, relative pose, triangulation, PnP, bundle adjustment), the gyro bias by least
 // squares, the preintegrations re-propagated with it, the linear alignment of velocities, gravity and scale,
 // the gravity refinement on the sphere (visual_inertial_alignment.h), and finally rotates the world so
@@ -18,7 +18,9 @@ namespace vigil::estimator {
 
 class VinsInitializer : public Initializer {
  public:
-  VinsInitializer(const VinsInitOptions& options, const CameraModel& camera, double gravity_mps2);
+  // `window_frames`: the full window (keyframes + newest); smaller windows are refused, as in the reference.
+  VinsInitializer(const VinsInitOptions& options, const CameraModel& camera, double gravity_mps2,
+                  int window_frames);
 
   bool TryInitialize(const std::vector<InitFrame>& window, InitResult* result) override;
   bool CanReinitialize() const override { return true; }
@@ -32,6 +34,7 @@ class VinsInitializer : public Initializer {
   Eigen::Vector3d p_BC_;
   double fx_;
   double gravity_mps2_;
+  std::size_t window_frames_;
 };
 
 }  // namespace vigil::estimator

@@ -40,7 +40,7 @@ TEST(VinsInitializer, IdealImuWithBiasesRecoversBiasScaleAndGravity) {
   const Eigen::Vector3d b_g(0.03, -0.02, 0.025), b_a(0.05, -0.05, 0.05);
   const Dataset data = sim::Simulate(testing::WindowSimOptions(0.0, b_g, b_a), 11);
   const auto window = testing::MakeWindow(data, 4, 11, ImuNoiseDensities{});
-  VinsInitializer init(VinsInitOptions{}, data.camera, 9.81);
+  VinsInitializer init(VinsInitOptions{}, data.camera, 9.81, 11);
   InitResult r;
   ASSERT_TRUE(init.TryInitialize(window, &r)) << r.failure_reason;
   ASSERT_EQ(r.states.size(), window.size());
@@ -62,7 +62,7 @@ TEST(VinsInitializer, PaperImuNoiseKeepsScaleAndGravityWithinTolerance) {
     const Dataset data =
         sim::Simulate(testing::WindowSimOptions(1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), seed);
     const auto window = testing::MakeWindow(data, 2, 11, ImuNoiseDensities{});
-    VinsInitializer init(VinsInitOptions{}, data.camera, 9.81);
+    VinsInitializer init(VinsInitOptions{}, data.camera, 9.81, 11);
     InitResult r;
     ASSERT_TRUE(init.TryInitialize(window, &r)) << "seed " << seed << ": " << r.failure_reason;
     const InitErrors e = Compare(data, window, r);
@@ -76,12 +76,23 @@ TEST(VinsInitializer, FailsWithoutParallaxAndSaysWhy) {
       sim::Simulate(testing::WindowSimOptions(0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), 1);
   auto window = testing::MakeWindow(data, 0, 11, ImuNoiseDensities{});
   for (auto& f : window) f.features_n = window.front().features_n;  // a camera that sees no motion
-  VinsInitializer init(VinsInitOptions{}, data.camera, 9.81);
+  VinsInitializer init(VinsInitOptions{}, data.camera, 9.81, 11);
   InitResult r;
   EXPECT_FALSE(init.TryInitialize(window, &r));
   EXPECT_NE(r.failure_reason.find("no reference frame"), std::string::npos) << r.failure_reason;
   EXPECT_TRUE(r.states.empty());
   EXPECT_TRUE(init.CanReinitialize());
+}
+
+TEST(VinsInitializer, WaitsForAFullWindow) {
+  const Dataset data =
+      sim::Simulate(testing::WindowSimOptions(0.0, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()), 1);
+  const auto window = testing::MakeWindow(data, 2, 11, ImuNoiseDensities{});
+  VinsInitializer init(VinsInitOptions{}, data.camera, 9.81, 12);
+  InitResult r;
+  EXPECT_FALSE(init.TryInitialize(window, &r));
+  EXPECT_NE(r.failure_reason.find("window not full (11 of 12 frames)"), std::string::npos)
+      << r.failure_reason;
 }
 
 TEST(MakeInitializer, VinsNeedsNoGroundTruth) {
