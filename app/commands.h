@@ -32,5 +32,6 @@ void AddConfigCommand(CLI::App& root);
 void AddSimulateCommand(CLI::App& root);
 void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
+void AddEvalCommand(CLI::App& root);
 
 }  // namespace vigil::app

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddEvalCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
