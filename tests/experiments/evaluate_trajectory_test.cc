@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/dataset.h"
+#include "core/output.h"
 #include "core/so3.h"
 
 namespace vigil::experiments {
@@ -106,6 +108,47 @@ TEST(EvaluateTrajectory, JsonHasTheKeysOfFormatsMd) {
   EXPECT_EQ(j["coverage"], 1.0);
   EXPECT_NE(EvaluationTable(EvaluateTrajectory(gt, gt, EvaluationOptions{})).find("RE 35 m yaw [deg]"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace vigil::experiments
+
+namespace vigil::experiments {
+namespace {
+
+TEST(EvaluateTrajectory, MatchesRpgTrajectoryEvaluationOnTheSameFiles) {
+  const std::string data = std::string(VIGIL_SOURCE_DIR) + "/tests/experiments/data/";
+  const Trajectory gt = ReadTumTrajectory(data + "rpg_pair_gt.txt");
+  const Trajectory est = ReadTumTrajectory(data + "rpg_pair_est.txt");
+  const nlohmann::json reference = nlohmann::json::parse(ReadFile(data + "rpg_pair_reference.json"));
+  const auto expect_stats = [](const nlohmann::json& ref, const ErrorStatistics& s, const std::string& what) {
+    if (ref.is_null()) {
+      EXPECT_EQ(s.n, 0) << what;
+      return;
+    }
+    EXPECT_EQ(s.n, ref["n"].get<int64_t>()) << what;
+    const std::pair<const char*, double> values[] = {{"rmse", s.rmse}, {"mean", s.mean}, {"median", s.median},
+                                                     {"std", s.std},   {"min", s.min},   {"max", s.max}};
+    for (const auto& [key, value] : values) {
+      const double r = ref[key].get<double>();
+      EXPECT_NEAR(value, r, 1e-6 * std::abs(r) + 1e-9) << what << " " << key;
+    }
+  };
+  for (const auto& [name, align] : AlignmentNames()) {
+    EvaluationOptions options;
+    options.align = align;
+    const TrajectoryEvaluation ev = EvaluateTrajectory(gt, est, options);
+    const nlohmann::json& ref = reference.at(name);
+    expect_stats(ref["ate"]["trans_m"], ev.ate_trans_m, name + " ATE translation");
+    expect_stats(ref["ate"]["rot_deg"], ev.ate_rot_deg, name + " ATE rotation");
+    ASSERT_EQ(ev.relative.size(), ref["relative"].size());
+    for (std::size_t i = 0; i < ev.relative.size(); ++i) {
+      const std::string what = name + " RE " + std::to_string(ev.relative[i].distance_m);
+      expect_stats(ref["relative"][i]["trans_m"], ev.relative[i].trans_m, what + " translation");
+      expect_stats(ref["relative"][i]["yaw_deg"], ev.relative[i].yaw_deg, what + " yaw");
+      expect_stats(ref["relative"][i]["rot_deg"], ev.relative[i].rot_deg, what + " rotation");
+    }
+  }
 }
 
 }  // namespace
