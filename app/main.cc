@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   AddTemplatesCommand(root);
   AddCleanCommand(root);
   AddPlotCommand(root);
+  AddEvalCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

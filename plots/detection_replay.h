@@ -2,8 +2,8 @@
 // (detections.csv) but not the mitigated signal.
 //
 // The simulator is deterministic, so Simulate(config.sim, config.seed) reproduces the run's raw IMU exactly.
-// The DTW detector needs a template library: detector.dtw.templates_file when set, else one built like a run
-// without a shared library builds it (a glitch-free simulation with seed DeriveSeed(seed, "templates")). A
+// The DTW library is resolved as a run without a shared library resolves it (experiments/detection_stage.h:
+// detector.dtw.templates_file, else a glitch-free simulation with seed DeriveSeed(seed, "templates")). A
 // sweep that shared one library across runs may have used another one; the figure then shades the flags the
 // run recorded and overlays the re-run's mitigation.
 #pragma once

@@ -1,6 +1,7 @@
 #include "plots/figure_data.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "plots/axes.h"

@@ -1,8 +1,6 @@
 #include "plots/render.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
 
 #include "core/dataset.h"
 #include "core/error.h"

@@ -1,8 +1,8 @@
 // Aligning an estimated trajectory onto the ground truth for display (figure 3).
 //
-// The metrics themselves come from the run's metrics.json (experiments' evaluation); this only places the
-// estimate in the ground-truth frame with the run's evaluation.align choice so that the curves can be
-// compared: posyaw (translation + rotation about gravity, closed form), se3 / sim3 (Umeyama), none.
+// The metrics themselves come from the run's metrics.json; this places the estimate in the ground-truth frame
+// the way the evaluation does (experiments/association.h and experiments/alignment.h, with the run's
+// evaluation.align) so that the curves can be compared.
 #pragma once
 
 #include "core/types.h"
@@ -10,8 +10,8 @@
 
 namespace vigil::plots {
 
-// Poses of `estimate` that have a ground-truth pose within 1 ms, transformed by the best alignment of the
-// given kind (least squares over the matched positions). Fewer than 2 matches: the matched poses unchanged.
+// The poses of `estimate` associated with a ground-truth pose (rpg rule, within 0.02 s), transformed by the
+// alignment of the given kind over the matched positions. Timestamps must increase strictly.
 Trajectory AlignForDisplay(const Trajectory& estimate, const Trajectory& groundtruth,
                            experiments::Alignment alignment);
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
+#include "experiments/run_command.h"
 #include "plots/image.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
@@ -114,6 +115,24 @@ TEST(RenderRun, WritesFiguresOneToFive) {
             (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png", "fig3_trajectories.png",
                                       "fig4_relative_error.png", "fig5_detection.png"}));
   for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+}
+
+// The contract end to end: a real run directory written by the experiments' runner (estimator included).
+TEST(RenderRun, RealRunDirectory) {
+  vigil::testing::TempDir tmp;
+  const std::string paper = std::string(VIGIL_SOURCE_DIR) + "/configs/paper.yaml";
+  experiments::RunToDirectory(paper,
+                              {"duration_s=4", "glitch.enabled=true", "glitch.mean=3", "glitch.std=1",
+                               "glitch.rate=0.02", "detector.type=threshold"},
+                              experiments::RunOptions{}, tmp.path() / "run", false);
+  const auto written = RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small());
+  EXPECT_EQ(Names(written),
+            (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png", "fig3_trajectories.png",
+                                      "fig4_relative_error.png", "fig5_detection.png"}));
+  for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+  if (const char* keep = std::getenv("VIGIL_PLOTS_TEST_OUTPUT")) {
+    RenderRunFigures(tmp.path() / "run", fs::path(keep) / "run", FigureOptions());
+  }
 }
 
 TEST(RenderRun, BadMetricsNamesTheFile) {

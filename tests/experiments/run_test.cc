@@ -1,0 +1,132 @@
+#include "experiments/run_command.h"
+
+#include <gtest/gtest.h>
+
+#include "core/dataset.h"
+#include "core/output.h"
+#include "experiments/evaluate_trajectory.h"
+#include "sim/simulator.h"
+#include "tests/core/test_util.h"
+
+namespace vigil::experiments {
+namespace {
+namespace fs = std::filesystem;
+using testing::InputErrorOf;
+using testing::TempDir;
+
+const std::string kPaper = std::string(VIGIL_SOURCE_DIR) + "/configs/paper.yaml";
+const std::vector<std::string> kShort = {"duration_s=4"};
+
+std::vector<std::string> With(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+TEST(Run, ShortRunEndToEnd) {
+  TempDir tmp;
+  const fs::path dir = tmp.path() / "run";
+  const nlohmann::json m = RunToDirectory(kPaper, kShort, RunOptions{}, dir, false);
+  for (const char* f :
+       {"config.yaml", "stamped_groundtruth.txt", "stamped_traj_estimate.txt", "metrics.json"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / "detections.csv"));  // detector none
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(dir / "metrics.json")), m);
+
+  EXPECT_EQ(m["status"], "ok") << m["failure_reason"];
+  EXPECT_EQ(m["seed"], 1);
+  EXPECT_EQ(m["duration_s"], 4.0);
+  for (const char* key : {"status", "failure_reason", "seed", "duration_s", "wall_time_s", "estimator", "ate",
+                          "relative", "detection", "coverage"})
+    EXPECT_TRUE(m.contains(key)) << key;
+  for (const char* key : {"simulate", "detect", "estimate", "evaluate", "total"})
+    EXPECT_TRUE(m["wall_time_s"][key].is_number()) << key;
+  for (const char* key : {"init", "initialized_at_s", "resets", "frames", "keyframes"})
+    EXPECT_TRUE(m["estimator"].contains(key)) << key;
+  EXPECT_EQ(m["estimator"]["init"], "groundtruth");
+  EXPECT_EQ(m["ate"]["align"], "posyaw");
+  EXPECT_EQ(m["relative"].size(), 5u);
+  EXPECT_EQ(m["relative"][0]["distance_m"], 7.0);
+  EXPECT_GT(m["relative"][0]["trans_m"]["n"].get<int>(), 10);
+  EXPECT_EQ(m["detection"]["detector"], "none");
+  // A loose bound: the estimator on 4 s of the paper scenario stays within decimetres.
+  EXPECT_LT(m["ate"]["trans_m"]["rmse"].get<double>(), 0.3);
+  EXPECT_GT(m["coverage"].get<double>(), 0.8);
+
+  // The written files are the evaluated ones: evaluating them again (`vigil eval`) gives the same numbers.
+  const Trajectory gt = ReadTumTrajectory((dir / "stamped_groundtruth.txt").string());
+  const Trajectory est = ReadTumTrajectory((dir / "stamped_traj_estimate.txt").string());
+  EXPECT_EQ(gt.size(), 121u);  // every camera frame of 4 s at 30 Hz
+  const TrajectoryEvaluation again = EvaluateTrajectory(gt, est, EvaluationOptions{});
+  EXPECT_NEAR(again.ate_trans_m.rmse, m["ate"]["trans_m"]["rmse"].get<double>(), 1e-9);
+  // config.yaml reproduces the run's configuration.
+  EXPECT_EQ(ReadFile(dir / "config.yaml"), [] {
+    RunConfig c = LoadRunConfig(kPaper, kShort);
+    return config::ToYaml(c);
+  }());
+}
+
+TEST(Run, DatasetRunEqualsTheSimulatedRun) {
+  TempDir tmp;
+  const std::vector<std::string> overrides =
+      With(kShort, {"glitch.enabled=true", "glitch.mean=50", "glitch.std=10", "detector.type=threshold"});
+  RunConfig c = LoadRunConfig(kPaper, overrides);
+  sim::SimulateToDirectory(c.sim, c.seed, config::ToYaml(c), tmp.path() / "ds", false);
+  const nlohmann::json simulated = RunToDirectory(kPaper, overrides, RunOptions{}, tmp.path() / "a", false);
+  RunOptions from_dataset;
+  from_dataset.dataset_dir = tmp.path() / "ds";
+  const nlohmann::json read = RunToDirectory(kPaper, overrides, from_dataset, tmp.path() / "b", false);
+  EXPECT_EQ(read["ate"], simulated["ate"]);
+  EXPECT_EQ(read["detection"], simulated["detection"]);
+  EXPECT_GT(read["detection"]["recall"].get<double>(), 0.8);
+  // detections.csv: a header and one row per IMU sample.
+  const std::string csv = ReadFile(tmp.path() / "b" / "detections.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 802);
+}
+
+TEST(Run, NoTrajectoriesWritesOnlyConfigAndMetrics) {
+  TempDir tmp;
+  RunOptions options;
+  options.write_trajectories = false;
+  RunToDirectory(kPaper, With(kShort, {"detector.type=hampel"}), options, tmp.path() / "run", false);
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(tmp.path() / "run"))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"config.yaml", "metrics.json"}));
+}
+
+TEST(Run, BadInputWritesNothing) {
+  TempDir tmp;
+  const fs::path dir = tmp.path() / "run";
+  EXPECT_EQ(InputErrorOf([&] { RunToDirectory(kPaper, {"glitch.rate=2"}, RunOptions{}, dir, false); }),
+            "--set: glitch.rate: must be in [0, 1]");
+  EXPECT_NE(InputErrorOf([&] {
+              RunToDirectory(kPaper, {"detector.threshold.bounds=[1, 2]"}, RunOptions{}, dir, false);
+            }),
+            "");
+  const std::string bad = tmp.File("bad.yaml", "seed: 1\nestimator:\n  init: magic\n");
+  EXPECT_NE(InputErrorOf([&] { RunToDirectory(bad, {}, RunOptions{}, dir, false); }).find("bad.yaml:3"),
+            std::string::npos);
+  RunOptions missing;
+  missing.dataset_dir = tmp.path() / "no_such_dataset";
+  EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kShort, missing, dir, false); }), "");
+  // Neither the run directory nor a staging sibling is left behind.
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(tmp.path())) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, (std::vector<std::string>{"bad.yaml"}));
+}
+
+TEST(Run, RefusesANonEmptyOutputUnlessForced) {
+  TempDir tmp;
+  const fs::path dir = tmp.path() / "run";
+  fs::create_directories(dir);
+  tmp.File("run/notes.txt", "mine");
+  EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kShort, RunOptions{}, dir, false); }), "");
+  EXPECT_EQ(ReadFile(dir / "notes.txt"), "mine");
+  RunToDirectory(kPaper, kShort, RunOptions{}, dir, /*force=*/true);
+  EXPECT_FALSE(fs::exists(dir / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "metrics.json"));
+}
+
+}  // namespace
+}  // namespace vigil::experiments
