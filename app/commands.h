@@ -33,5 +33,6 @@ void AddSimulateCommand(CLI::App& root);
 void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);
+void AddRunCommand(CLI::App& root);
 
 }  // namespace vigil::app

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddRunCommand(root);
   AddEvalCommand(root);
   try {
     root.parse(argc, argv);
