@@ -91,6 +91,24 @@ TEST(Run, DatasetRunEqualsTheSimulatedRun) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 802);
 }
 
+TEST(Run, ADivergingEstimatorStillWritesItsMetrics) {
+  // Huge glitches on every axis of 30 % of the samples and no detector: the estimator cannot keep up.
+  TempDir tmp;
+  const nlohmann::json m =
+      RunToDirectory(kPaper,
+                     With(kTiny, {"glitch.enabled=true", "glitch.mean=500", "glitch.rate=0.3",
+                                  "glitch.axes=[ax, ay, az, wx, wy, wz]", "estimator.init=groundtruth"}),
+                     RunOptions{}, tmp.path() / "run", false);
+  EXPECT_TRUE(m["status"] == "failed" || m["estimator"]["resets"].get<int>() > 0) << m.dump();
+  if (m["status"] == "failed") {
+    EXPECT_FALSE(m["failure_reason"].get<std::string>().empty());
+    EXPECT_LT(m["coverage"].get<double>(),
+              1.0);  // the evaluation covers what was estimated before the failure
+  }
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(tmp.path() / "run" / "metrics.json")), m);
+  EXPECT_TRUE(fs::exists(tmp.path() / "run" / "stamped_traj_estimate.txt"));
+}
+
 TEST(Run, NoTrajectoriesWritesOnlyConfigAndMetrics) {
   TempDir tmp;
   RunOptions options;
