@@ -77,6 +77,7 @@ class Estimator {
   void Predict(Frame* frame) const;
   // Builds and solves the window problem; false with a reason when the solver fails.
   bool Optimize(bool marginalize_oldest_next, std::string* reason);
+  void HoldGauge(const NavState& oldest_before);
   std::string DetectFailure(const Eigen::Vector3d& previous_p_W) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);

@@ -1,10 +1,13 @@
 // The window's nonlinear least-squares problem and its Ceres solve.
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
 #include <ceres/problem.h>
 #include <ceres/solver.h>
 
+#include "core/so3.h"
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
 #include "estimator/reprojection_factor.h"
@@ -61,6 +64,8 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
     }
   }
 
+  const NavState oldest_before = window_.front()->State();
+
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = ceres::DENSE_SCHUR;
   solver_options.trust_region_strategy_type = ceres::DOGLEG;
@@ -74,11 +79,31 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
+  if (std::getenv("VIGIL_EST_DEBUG")) std::fprintf(stderr, "%s\n", summary.BriefReport().c_str());
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
     return false;
   }
+  if (prior_) HoldGauge(oldest_before);
   return true;
+}
+
+// Position and yaw of the window are unobservable; the prior keeps only relative information, so the solver
+// may move the whole window along them. Undo that motion: rotate about z and shift every state so that the
+// oldest frame keeps its position and yaw from before the solve.
+void Estimator::HoldGauge(const NavState& oldest_before) {
+  const NavState oldest_after = window_.front()->State();
+  const double dyaw =
+      YawOf(oldest_before.q_WB.toRotationMatrix()) - YawOf(oldest_after.q_WB.toRotationMatrix());
+  const Eigen::Matrix3d R = RotZ(dyaw);
+  const Eigen::Quaterniond q(R);
+  for (const auto& f : window_) {
+    NavState s = f->State();
+    s.p_W = R * (s.p_W - oldest_after.p_W) + oldest_before.p_W;
+    s.q_WB = (q * s.q_WB).normalized();
+    s.v_W = R * s.v_W;
+    f->SetState(s);
+  }
 }
 
 }  // namespace vigil::estimator
