@@ -109,6 +109,26 @@ TEST(Run, ADivergingEstimatorStillWritesItsMetrics) {
   EXPECT_TRUE(fs::exists(tmp.path() / "run" / "stamped_traj_estimate.txt"));
 }
 
+TEST(Run, SameConfigGivesIdenticalFilesWithoutASolverTimeCap) {
+  // What sweeps rely on (-j 1 == -j 8). The default solver time cap (max_time_s, as VINS-Mono) makes the
+  // result depend on the machine's load; without it a run is a pure function of its config.
+  TempDir tmp;
+  const auto overrides =
+      With(kTiny, {"estimator.solver.max_time_s=0", "glitch.enabled=true", "detector.type=dtw"});
+  RunToDirectory(kPaper, overrides, RunOptions{}, tmp.path() / "a", false);
+  RunToDirectory(kPaper, overrides, RunOptions{}, tmp.path() / "b", false);
+  for (const char* f :
+       {"config.yaml", "stamped_groundtruth.txt", "stamped_traj_estimate.txt", "detections.csv"})
+    EXPECT_EQ(ReadFile(tmp.path() / "a" / f), ReadFile(tmp.path() / "b" / f)) << f;
+  auto a = nlohmann::json::parse(ReadFile(tmp.path() / "a" / "metrics.json"));
+  auto b = nlohmann::json::parse(ReadFile(tmp.path() / "b" / "metrics.json"));
+  for (auto* m : {&a, &b}) {  // wall-clock times are the only difference
+    m->erase("wall_time_s");
+    m->at("estimator").erase("timing");
+  }
+  EXPECT_EQ(a, b);
+}
+
 TEST(Run, NoTrajectoriesWritesOnlyConfigAndMetrics) {
   TempDir tmp;
   RunOptions options;
