@@ -34,5 +34,6 @@ void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
 void AddPlotCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);
+void AddRunCommand(CLI::App& root);
 
 }  // namespace vigil::app

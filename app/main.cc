@@ -40,8 +40,9 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
-  AddPlotCommand(root);
+  AddRunCommand(root);
   AddEvalCommand(root);
+  AddPlotCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

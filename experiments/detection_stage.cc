@@ -1,5 +1,7 @@
 #include "experiments/detection_stage.h"
 
+#include <algorithm>
+
 #include "core/random.h"
 #include "sim/simulator.h"
 
@@ -8,6 +10,10 @@ namespace vigil::experiments {
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config) {
   sim::SimOptions clean_sim = config.sim;
   clean_sim.glitch.enabled = false;
+  // A short run still gets a library: at least twice the k + 1 slices BuildTemplates needs.
+  const detectors::DtwOptions& dtw = config.detector.dtw;
+  const double min_duration_s = 2.0 * (dtw.templates + 1) * dtw.slice_length / config.sim.imu.rate_hz;
+  clean_sim.duration_s = std::max(clean_sim.duration_s, min_duration_s);
   const Dataset clean = sim::Simulate(clean_sim, DeriveSeed(config.seed, "templates"));
   detectors::TemplateLibrary library =
       detectors::BuildTemplates(clean.imu_clean.empty() ? clean.imu : clean.imu_clean, config.detector.dtw);

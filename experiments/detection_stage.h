@@ -23,7 +23,8 @@ namespace vigil::experiments {
 std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConfig& config,
                                                                    const detectors::TemplateLibrary* given);
 
-// The glitch-free simulation's library (the third source above).
+// The glitch-free simulation's library (the third source above): the run's scenario without glitches, seed
+// DeriveSeed(seed, "templates"), lengthened when needed to at least 2 (k + 1) slices of clean IMU.
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config);
 
 struct DetectionStage {

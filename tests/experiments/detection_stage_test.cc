@@ -47,6 +47,14 @@ TEST(DetectionStage, GivenLibraryIsUsedAndOtherDetectorsNeedNone) {
   EXPECT_NE(InputErrorOf([&] { ResolveTemplates(config, nullptr); }), "");
 }
 
+TEST(DetectionStage, AShortRunStillGetsALibrary) {
+  RunConfig config = LoadRunConfig("", {"duration_s=1", "detector.type=dtw"});
+  const auto library = ResolveTemplates(config, nullptr);
+  ASSERT_TRUE(library);
+  EXPECT_EQ(library->count(), config.detector.dtw.templates);
+  EXPECT_GE(library->calibration_slices, 2 * (config.detector.dtw.templates + 1));
+}
+
 TEST(DetectionStage, ThresholdFindsAndMitigatesLargeGlitches) {
   RunConfig config = GlitchyConfig();
   const Dataset data = sim::Simulate(config.sim, config.seed);
