@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
@@ -27,7 +28,8 @@ constexpr const char* kGroundTruthHeader =
 // Enforces strictly increasing timestamps while reading.
 void CheckIncreasing(const CsvReader& r, int64_t t_ns, int64_t* last, bool allow_equal = false) {
   if (*last != INT64_MIN && (allow_equal ? t_ns < *last : t_ns <= *last))
-    r.Fail("timestamp " + std::to_string(t_ns) + " does not increase (previous " + std::to_string(*last) + ")");
+    r.Fail("timestamp " + std::to_string(t_ns) + " does not increase (previous " + std::to_string(*last) +
+           ")");
   *last = t_ns;
 }
 
@@ -35,10 +37,17 @@ void CheckNotEmpty(const CsvReader& r, std::size_t n) {
   if (n == 0) r.Fail("no data rows");
 }
 
+// A quaternion that is unit to double precision is kept bit for bit (what vigil wrote reads back unchanged,
+// so a run on a written dataset equals the run on the simulation); a slightly denormalized one (rounded text)
+// is renormalized.
+Eigen::Quaterniond AsUnit(const Eigen::Quaterniond& q) {
+  return std::abs(q.squaredNorm() - 1.0) <= 8 * std::numeric_limits<double>::epsilon() ? q : q.normalized();
+}
+
 Eigen::Quaterniond ReadUnitQuaternion(const CsvReader& r, double w, double x, double y, double z) {
   const Eigen::Quaterniond q(w, x, y, z);
   if (std::abs(q.norm() - 1.0) > 1e-3) r.Fail("quaternion is not unit (norm " + FormatDouble(q.norm()) + ")");
-  return q.normalized();
+  return AsUnit(q);
 }
 
 }  // namespace
@@ -155,7 +164,8 @@ std::string FeaturesCsv(const std::vector<CameraFrame>& frames) {
   return w.Str();
 }
 
-std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path, const std::vector<int64_t>& frame_times_ns) {
+std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
+                                         const std::vector<int64_t>& frame_times_ns) {
   CsvReader r(path, 4, "timestamp [ns], id, u [px], v [px]");
   std::vector<CameraFrame> frames;
   std::size_t next_time = 0;
@@ -227,7 +237,8 @@ Dataset ReadDataset(const fs::path& dir) {
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());
   d.camera = ReadCameraYaml((dir / kCamera).string());
   // Camera frame times: every 1/rate_hz from the first IMU sample, within the IMU time span.
-  const std::vector<int64_t> frame_times = CameraFrameTimes(d.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns);
+  const std::vector<int64_t> frame_times =
+      CameraFrameTimes(d.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns);
   d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times);
   return d;
 }
@@ -264,20 +275,23 @@ Trajectory ReadTumTrajectory(const std::string& path) {
     std::string tok;
     while (fields >> tok) {
       double x = 0.0;
-      if (!ParseDouble(tok, &x)) throw InputError(Located(path, line, "expected a finite number, got '" + tok + "'"));
+      if (!ParseDouble(tok, &x))
+        throw InputError(Located(path, line, "expected a finite number, got '" + tok + "'"));
       v.push_back(x);
     }
     if (v.size() != 8)
-      throw InputError(Located(path, line, "expected 8 columns (timestamp tx ty tz qx qy qz qw), found " +
-                                               std::to_string(v.size())));
+      throw InputError(
+          Located(path, line,
+                  "expected 8 columns (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size())));
     StampedPose p;
     p.t_ns = SToNs(v[0]);
-    if (last != INT64_MIN && p.t_ns <= last) throw InputError(Located(path, line, "timestamp does not increase"));
+    if (last != INT64_MIN && p.t_ns <= last)
+      throw InputError(Located(path, line, "timestamp does not increase"));
     last = p.t_ns;
     p.p_W = Eigen::Vector3d(v[1], v[2], v[3]);
     const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
     if (std::abs(q.norm() - 1.0) > 1e-3) throw InputError(Located(path, line, "quaternion is not unit"));
-    p.q_WB = q.normalized();
+    p.q_WB = AsUnit(q);
     out.push_back(p);
   }
   if (out.empty()) throw InputError(path + ": no poses");

@@ -79,7 +79,7 @@ TEST(Run, DatasetRunEqualsTheSimulatedRun) {
   RunOptions from_dataset;
   from_dataset.dataset_dir = tmp.path() / "ds";
   const nlohmann::json read = RunToDirectory(kPaper, overrides, from_dataset, tmp.path() / "b", false);
-  // The files hold the same numbers (up to the last bit of re-normalized quaternions).
+  // The files hold the same numbers, bit for bit.
   EXPECT_NEAR(read["ate"]["trans_m"]["rmse"].get<double>(), simulated["ate"]["trans_m"]["rmse"].get<double>(),
               1e-9);
   EXPECT_NEAR(read["ate"]["rot_deg"]["rmse"].get<double>(), simulated["ate"]["rot_deg"]["rmse"].get<double>(),
