@@ -32,5 +32,9 @@ void AddConfigCommand(CLI::App& root);
 void AddSimulateCommand(CLI::App& root);
 void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
+void AddSweepCommand(CLI::App& root);
+void AddTablesCommand(CLI::App& root);
+void AddPaperCommand(CLI::App& root);
+void AddRegressCommand(CLI::App& root);
 
 }  // namespace vigil::app

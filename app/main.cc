@@ -40,6 +40,8 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddTablesCommand(root);
+  AddRegressCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -229,6 +229,17 @@ SweepSpec LoadSweepSpec(const std::string& path) {
   return spec;
 }
 
+void SetSeedCount(SweepSpec* spec, uint64_t count) {
+  if (count == 0) throw InputError("--seeds: must be at least 1");
+  const uint64_t first = spec->seeds.front();
+  if (spec->template_seed >= first && spec->template_seed - first < count)
+    throw InputError("--seeds " + std::to_string(count) + ": seeds " + std::to_string(first) + ".." +
+                     std::to_string(first + count - 1) + " would include the template seed " +
+                     std::to_string(spec->template_seed) + " (" + spec->path + ": template_seed)");
+  spec->seeds.clear();
+  for (uint64_t i = 0; i < count; ++i) spec->seeds.push_back(first + i);
+}
+
 std::string ResolvedSweepYaml(const SweepSpec& spec) {
   auto strip = [](const std::string& key, const std::string& prefix) {
     return key.compare(0, prefix.size() + 1, prefix + ".") == 0 ? key.substr(prefix.size() + 1) : key;

@@ -72,6 +72,10 @@ struct SweepSpec {
 // Reads and checks a sweep file; InputError "file:line: key: reason".
 SweepSpec LoadSweepSpec(const std::string& path);
 
+// Replaces the seeds by `count` consecutive ones from the first (`vigil paper --seeds N`); InputError when
+// they would include the template seed.
+void SetSeedCount(SweepSpec* spec, uint64_t count);
+
 // The resolved sweep file (absolute base path, explicit seed list): written as DIR/sweep.yaml, and read back
 // by LoadSweepSpec to give the same spec (so `vigil tables DIR` and `--resume` work from the directory).
 std::string ResolvedSweepYaml(const SweepSpec& spec);

@@ -1,5 +1,7 @@
 #include "experiments/sweep_spec.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "tests/core/test_util.h"
@@ -98,6 +100,32 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
               LoadSweepSpec(dir.File("nobase.yaml", "base: missing.yaml\nmethods: {a: none}\nseeds: [1]\n"));
             }).rfind((dir.path() / "nobase.yaml").string() + ":1: base: ", 0),
             0u);
+}
+
+TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
+  const SweepSpec paper = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_sweep.yaml");
+  EXPECT_EQ(paper.run_count(), 3u * 4u * 10u);
+  EXPECT_EQ(paper.table_methods, (std::vector<std::string>{"trunc", "dtw", "original"}));
+  const auto cells = EnumerateCells(paper);
+  const auto runs = EnumerateRuns(paper, cells);
+  EXPECT_TRUE(
+      std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.id == "noise_50_10-dtw-s003"; }));
+  for (const auto& cell : cells) {
+    const RunConfig c = ResolveCellConfig(paper, cell);
+    EXPECT_TRUE(c.sim.glitch.enabled);
+    EXPECT_EQ(c.sim.duration_s, 20.0);
+  }
+  const RunConfig big = ResolveCellConfig(paper, cells[8]);  // noise_50_10 x trunc
+  EXPECT_EQ(big.sim.glitch.mean, 50.0);
+  EXPECT_EQ(big.detector.type, detectors::DetectorType::kThreshold);
+  SweepSpec ten = paper;
+  SetSeedCount(&ten, 3);
+  EXPECT_EQ(ten.seeds, (std::vector<uint64_t>{1, 2, 3}));
+  EXPECT_NE(InputErrorOf([&] { SetSeedCount(&ten, 1000); }).find("template seed 1000"), std::string::npos);
+
+  const SweepSpec ci = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/ci_sweep.yaml");
+  EXPECT_EQ(ci.run_count(), 18u);
+  EXPECT_FALSE(ci.write_trajectories);
 }
 
 }  // namespace
