@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddEvalCommand(root);
   AddTablesCommand(root);
   AddRegressCommand(root);
   try {

@@ -1,10 +1,11 @@
 // What the estimator consumes and what it returns.
 //
-// The estimator knows nothing of the simulator: IMU samples, feature observations per camera frame (track id +
-// pixel), the camera model and the IMU noise densities are all it needs, so real feature tracks and IMU logs fill
-// the same struct. Ground truth enters only for `estimator.init: groundtruth`.
+// The estimator knows nothing of the simulator: IMU samples, feature observations per camera frame (track id
+// + pixel), the camera model and the IMU noise densities are all it needs, so real feature tracks and IMU
+// logs fill the same struct. Ground truth enters only for `estimator.init: groundtruth`.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -16,19 +17,22 @@ namespace vigil::estimator {
 
 // Continuous-time IMU noise densities (the datasheet values), discretized by the preintegration.
 struct ImuNoiseDensities {
-  double gyro_noise_density = 0.015;       // [rad/s/sqrt(Hz)]
-  double accel_noise_density = 0.019;      // [m/s^2/sqrt(Hz)]
-  double gyro_bias_random_walk = 1e-5;     // [rad/s^2/sqrt(Hz)]
-  double accel_bias_random_walk = 1e-4;    // [m/s^3/sqrt(Hz)]
+  double gyro_noise_density = 0.015;     // [rad/s/sqrt(Hz)]
+  double accel_noise_density = 0.019;    // [m/s^2/sqrt(Hz)]
+  double gyro_bias_random_walk = 1e-5;   // [rad/s^2/sqrt(Hz)]
+  double accel_bias_random_walk = 1e-4;  // [m/s^3/sqrt(Hz)]
 };
 
 struct EstimatorInput {
-  ImuStream imu;                     // time-ordered, the stream the estimator integrates (cleaned or raw)
-  std::vector<CameraFrame> frames;   // time-ordered camera frames with their observations (empty frames allowed)
+  ImuStream imu;  // time-ordered, the stream the estimator integrates (cleaned or raw)
+  std::vector<CameraFrame>
+      frames;  // time-ordered camera frames with their observations (empty frames allowed)
   CameraModel camera;
   ImuNoiseDensities imu_noise;
-  double gravity_mps2 = 9.81;        // g_W = (0, 0, -g)
-  std::vector<NavState> groundtruth; // only read by init = groundtruth (at any rate covering the frame times)
+  double gravity_mps2 = 9.81;  // g_W = (0, 0, -g)
+  std::vector<NavState>
+      groundtruth;    // only read by init = groundtruth (at any rate covering the frame times)
+  uint64_t seed = 0;  // run seed: the optional ground-truth init perturbation derives from it
 };
 
 // Wall-clock cost of the estimator's stages, summed over the run.
@@ -41,16 +45,16 @@ struct EstimatorTiming {
 };
 
 struct EstimatorResult {
-  bool ok = true;                    // false: diverged or failed; `failure_reason` says why
+  bool ok = true;  // false: diverged or failed; `failure_reason` says why
   std::string failure_reason;
   // One state per camera frame after initialization (the newest window state when that frame was processed),
   // never NaN/Inf. Trajectory rows are the same poses.
   std::vector<NavState> states;
   Trajectory trajectory;
   double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // time of the first successful init
-  int resets = 0;                    // failure-detection resets (each followed by re-initialization)
-  int frames = 0;                    // camera frames processed
-  int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
+  int resets = 0;     // failure-detection resets (each followed by re-initialization)
+  int frames = 0;     // camera frames processed
+  int keyframes = 0;  // frames kept as keyframes (oldest marginalized)
   EstimatorTiming timing;
 };
 

@@ -1,4 +1,6 @@
 // Options of the sliding-window visual-inertial estimator.
+//
+// Defaults are the reference values of VINS-Mono (../shared/spec/references.md, estimator section).
 #pragma once
 
 #include "core/config.h"
@@ -7,14 +9,142 @@ namespace vigil::estimator {
 
 enum class InitMode { kGroundTruth, kVins };
 
+// `init: groundtruth`: the first window's states from ground truth, optionally perturbed (seeded from the run
+// seed).
+struct GroundTruthInitOptions {
+  double position_std_m = 0.0;
+  double rotation_std_deg = 0.0;
+  double velocity_std_mps = 0.0;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("position_std_m", position_std_m, "std of the Gaussian perturbation of each initial position [m]",
+            Bounds::NonNegative());
+    v.Field("rotation_std_deg", rotation_std_deg,
+            "std of the Gaussian perturbation (rotation vector, per axis) of each initial orientation [deg]",
+            Bounds::NonNegative());
+    v.Field("velocity_std_mps", velocity_std_mps,
+            "std of the Gaussian perturbation of each initial velocity [m/s]", Bounds::NonNegative());
+  }
+};
+
+struct WindowOptions {
+  int size = 10;                         // keyframes kept besides the newest frame
+  double min_parallax_px = 10.0;         // keyframe when the mean parallax to the previous frame reaches this
+  int min_tracked_features = 20;         // keyframe when fewer features are tracked into the newest frame
+  double repropagate_accel_bias = 0.10;  // re-integrate an IMU factor when b_a moved this far [m/s^2]
+  double repropagate_gyro_bias = 0.01;   // ... or b_g moved this far [rad/s]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("size", size, "sliding-window keyframes (plus the newest frame)", Bounds::AtLeast(2));
+    v.Field(
+        "min_parallax_px", min_parallax_px,
+        "keyframe when the mean parallax of the features tracked from the previous frame reaches this [px]",
+        Bounds::Positive());
+    v.Field("min_tracked_features", min_tracked_features,
+            "keyframe when fewer already-known features are seen in the newest frame", Bounds::NonNegative());
+    v.Field("repropagate_accel_bias", repropagate_accel_bias,
+            "re-integrate an IMU factor when its b_a estimate moved this far from the linearization point "
+            "[m/s^2]",
+            Bounds::Positive());
+    v.Field("repropagate_gyro_bias", repropagate_gyro_bias,
+            "re-integrate an IMU factor when its b_g estimate moved this far from the linearization point "
+            "[rad/s]",
+            Bounds::Positive());
+  }
+};
+
+struct FeatureOptions {
+  int min_observations = 2;      // a feature enters the optimization once seen this often in the window
+  double pixel_std_px = 1.5;     // reprojection noise std: sqrt information = focal length / pixel_std_px
+  double cauchy_scale = 1.0;     // Cauchy loss scale on the whitened residual
+  double min_depth_m = 0.1;      // triangulated depths below this are rejected
+  double max_depth_m = 200.0;    // ... and above this
+  double default_depth_m = 5.0;  // initial depth when triangulation is not possible
+  double outlier_threshold_px =
+      3.0;  // after a solve, features with a larger mean reprojection error are removed
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("min_observations", min_observations, "observations in the window before a feature is optimized",
+            Bounds::AtLeast(2));
+    v.Field("pixel_std_px", pixel_std_px,
+            "feature reprojection noise std (sqrt information = fx / this) [px]", Bounds::Positive());
+    v.Field("cauchy_scale", cauchy_scale, "Cauchy loss scale of the whitened reprojection residual",
+            Bounds::Positive());
+    v.Field("min_depth_m", min_depth_m, "smallest accepted feature depth in its first observing frame [m]",
+            Bounds::Positive());
+    v.Field("max_depth_m", max_depth_m, "largest accepted feature depth in its first observing frame [m]",
+            Bounds::Positive());
+    v.Field("default_depth_m", default_depth_m, "initial depth of a feature that cannot be triangulated [m]",
+            Bounds::Positive());
+    v.Field("outlier_threshold_px", outlier_threshold_px,
+            "features whose mean reprojection error exceeds this after a solve are removed [px]",
+            Bounds::Positive());
+  }
+};
+
+struct SolverOptions {
+  int max_iterations = 8;
+  double max_time_s = 0.04;                  // per solve; 0 = no time limit
+  double marginalize_old_time_factor = 0.8;  // time limit scale when the oldest frame is marginalized
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("max_iterations", max_iterations, "Ceres iterations per solve (DENSE_SCHUR, DOGLEG)",
+            Bounds::AtLeast(1));
+    v.Field("max_time_s", max_time_s,
+            "wall-clock limit per solve [s] (0: none; a limit that binds makes runs machine-dependent)",
+            Bounds::NonNegative());
+    v.Field("marginalize_old_time_factor", marginalize_old_time_factor,
+            "scale of the time limit when the oldest frame will be marginalized", Bounds::Closed(0.01, 1.0));
+  }
+};
+
+struct FailureOptions {
+  double max_accel_bias = 2.5;       // |b_a| [m/s^2]
+  double max_gyro_bias = 1.0;        // |b_g| [rad/s]
+  double max_position_jump_m = 5.0;  // newest position change between two frames [m]
+  double max_z_jump_m = 1.0;         // newest z change between two frames [m]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("max_accel_bias", max_accel_bias, "failure when |b_a| exceeds this [m/s^2]", Bounds::Positive());
+    v.Field("max_gyro_bias", max_gyro_bias, "failure when |b_g| exceeds this [rad/s]", Bounds::Positive());
+    v.Field("max_position_jump_m", max_position_jump_m,
+            "failure when the newest position moves more than this between two frames [m]",
+            Bounds::Positive());
+    v.Field("max_z_jump_m", max_z_jump_m,
+            "failure when the newest z moves more than this between two frames [m]", Bounds::Positive());
+  }
+};
+
 struct EstimatorOptions {
   InitMode init = InitMode::kGroundTruth;
+  GroundTruthInitOptions groundtruth_init;
+  WindowOptions window;
+  FeatureOptions features;
+  SolverOptions solver;
+  FailureOptions failure;
 
   template <class V>
   void Visit(V& v) {
     v.Enum("init", init,
            config::EnumNames<InitMode>{{"groundtruth", InitMode::kGroundTruth}, {"vins", InitMode::kVins}},
-           "initialization: groundtruth (first window from ground truth) or vins (visual-inertial, no ground truth)");
+           "initialization: groundtruth (first window from ground truth) or vins (visual-inertial, no ground "
+           "truth)");
+    v.Section("groundtruth_init", groundtruth_init, "perturbation of the ground-truth initialization");
+    v.Section("window", window, "sliding window and keyframe decision");
+    v.Section("features", features, "feature tracks: triangulation, reprojection noise, outliers");
+    v.Section("solver", solver, "Ceres solve per frame");
+    v.Section("failure", failure,
+              "failure detection (groundtruth init: the run fails; vins: reset and re-init)");
   }
 };
 

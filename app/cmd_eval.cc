@@ -1,0 +1,58 @@
+// `vigil eval`: rpg-compatible ATE and relative errors of two TUM / rpg trajectory files.
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.h"
+#include "core/dataset.h"
+#include "core/error.h"
+#include "core/format.h"
+#include "experiments/evaluate_trajectory.h"
+
+namespace vigil::app {
+
+void AddEvalCommand(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "eval",
+      "rpg-compatible evaluation of an estimated trajectory: association within 0.02 s, alignment, ATE and "
+      "relative errors per sub-trajectory length (files: '# timestamp tx ty tz qx qy qz qw', seconds)");
+  struct Args {
+    std::string gt, est, align = "posyaw";
+    std::vector<double> distances;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  std::string names;
+  for (const auto& [name, a] : experiments::AlignmentNames()) names += (names.empty() ? "" : ", ") + name;
+  cmd->add_option("GT", args->gt, "ground-truth trajectory (e.g. stamped_groundtruth.txt)")->required();
+  cmd->add_option("EST", args->est, "estimated trajectory (e.g. stamped_traj_estimate.txt)")->required();
+  cmd->add_option("--align", args->align, "alignment: " + names + " (default posyaw)");
+  cmd->add_option(
+         "--distances", args->distances,
+         "sub-trajectory lengths of the relative errors [m], comma separated (default 7,14,21,28,35)")
+      ->delimiter(',');
+  cmd->add_flag("--json", args->json, "print JSON (the ate/relative/coverage part of metrics.json)");
+  SetAction(cmd, [args] {
+    experiments::EvaluationOptions options;
+    bool known = false;
+    for (const auto& [name, a] : experiments::AlignmentNames())
+      if (name == args->align) options.align = a, known = true;
+    if (!known) throw InputError("--align: unknown alignment '" + args->align + "'");
+    if (!args->distances.empty()) {
+      for (double d : args->distances)
+        if (!(d > 0.0)) throw InputError("--distances: every length must be > 0, got " + FormatDouble(d));
+      options.distances_m = args->distances;
+    }
+    const Trajectory gt = ReadTumTrajectory(args->gt);
+    const Trajectory est = ReadTumTrajectory(args->est);
+    const experiments::TrajectoryEvaluation ev = experiments::EvaluateTrajectory(gt, est, options);
+    if (ev.matched_poses == 0)
+      throw InputError(args->est + ": no pose within 0.02 s of a pose of " + args->gt);
+    if (args->json)
+      std::printf("%s\n", experiments::EvaluationJson(ev).dump(2).c_str());
+    else
+      std::printf("%s", experiments::EvaluationTable(ev).c_str());
+    return 0;
+  });
+}
+
+}  // namespace vigil::app

@@ -1,0 +1,41 @@
+// The detection stage of a run: glitch detection + mitigation of the measured IMU, and how well it did.
+//
+// DTW needs a template library of normal motion. Its source, in order: the library the caller passes (a sweep
+// builds one per setting and shares it), `detector.dtw.templates_file`, else a library built from the clean
+// IMU of a glitch-free simulation of the same scenario with seed DeriveSeed(seed, "templates"): never from
+// the run's own data, so the detector learns nothing about the glitches it is scored on.
+#pragma once
+
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "core/dataset.h"
+#include "detectors/detection_metrics.h"
+#include "detectors/detector.h"
+#include "detectors/template_library.h"
+#include "experiments/run_config.h"
+
+namespace vigil::experiments {
+
+// The library a dtw run uses (see above); null when the detector is not dtw. `given` may be null. The
+// returned holder owns a library it read or built, or points at `given`.
+std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConfig& config,
+                                                                   const detectors::TemplateLibrary* given);
+
+// The glitch-free simulation's library (the third source above).
+detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config);
+
+struct DetectionStage {
+  detectors::DetectionResult result;  // cleaned IMU + one flag per sample
+  detectors::DetectionMetrics metrics;
+  nlohmann::json json;  // the "detection" object of metrics.json
+};
+
+// Runs config.detector on dataset.imu. `with_glitches` / `with_clean`: whether dataset.glitches and
+// dataset.imu_clean are known (precision/recall and the RMS difference to the clean IMU are reported only
+// then).
+DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
+                            const detectors::TemplateLibrary* templates, bool with_glitches, bool with_clean);
+
+}  // namespace vigil::experiments

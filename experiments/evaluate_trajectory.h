@@ -1,0 +1,51 @@
+// rpg-compatible evaluation of an estimated trajectory against its ground truth: association, alignment,
+// absolute trajectory error (ATE) and relative errors per sub-trajectory length. The library behind
+// metrics.json and `vigil eval`.
+//
+// ATE per matched pose after alignment: translation |p_gt - (s R p_est + t)| [m] and rotation = angle of
+// (R R_est) R_gt^T [deg]. Coverage = matched ground-truth poses / ground-truth poses.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/types.h"
+#include "experiments/alignment.h"
+#include "experiments/association.h"
+#include "experiments/evaluation_options.h"
+#include "experiments/statistics.h"
+
+namespace vigil::experiments {
+
+struct RelativeErrorStatistics {
+  double distance_m = 0.0;
+  ErrorStatistics trans_m, trans_perc, yaw_deg, rot_deg;
+};
+
+struct TrajectoryEvaluation {
+  Alignment align = Alignment::kPosYaw;
+  SimilarityTransform alignment;  // estimate -> ground-truth world (identity when nothing matched)
+  std::size_t gt_poses = 0, est_poses = 0, matched_poses = 0;
+  double coverage = 0.0;     // matched_poses / gt_poses (0 without ground truth)
+  double gt_length_m = 0.0;  // distance travelled along the matched ground truth
+  ErrorStatistics ate_trans_m, ate_rot_deg;
+  std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
+};
+
+// Never throws for a poor or empty estimate: with no matched pose every statistic has n = 0.
+TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& est,
+                                        const EvaluationOptions& options,
+                                        int64_t max_difference_ns = kDefaultMaxAssociationDifferenceNs);
+
+// {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses"}, "relative": [{"distance_m",
+// "trans_m", "trans_perc", "yaw_deg", "rot_deg", "pairs"}...], "coverage": fraction, "gt_length_m": ..}
+// (formats.md).
+nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
+
+// A readable multi-line table of the same numbers (for `vigil eval`).
+std::string EvaluationTable(const TrajectoryEvaluation& evaluation);
+
+}  // namespace vigil::experiments

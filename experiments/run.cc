@@ -1,0 +1,116 @@
+#include "experiments/run.h"
+
+#include <chrono>
+#include <exception>
+#include <string>
+#include <utility>
+
+#include "core/dataset.h"
+#include "core/error.h"
+#include "core/output.h"
+#include "estimator/run_estimator.h"
+#include "experiments/detection_stage.h"
+#include "experiments/evaluate_trajectory.h"
+#include "experiments/run_inputs.h"
+#include "experiments/run_metrics.h"
+#include "sim/simulator.h"
+
+namespace vigil::experiments {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The recording a run starts from, and what is known about it.
+struct RunData {
+  Dataset dataset;
+  bool with_glitches = false;  // dataset.glitches is the truth (simulated, or glitches.csv present)
+  bool with_clean = false;     // dataset.imu_clean is the glitch-free stream
+  double duration_s = 0.0;
+};
+
+RunData LoadData(const RunConfig& config, const RunOptions& options) {
+  RunData data;
+  if (options.dataset_dir.empty()) {
+    data.dataset = sim::Simulate(config.sim, config.seed);
+    data.with_glitches = data.with_clean = true;
+    data.duration_s = config.sim.duration_s;
+    return data;
+  }
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(options.dataset_dir, ec))
+    throw InputError(options.dataset_dir.string() + ": not a dataset directory");
+  data.dataset = ReadDataset(options.dataset_dir);
+  data.with_glitches = fs::exists(options.dataset_dir / dataset_files::kGlitches, ec);
+  data.with_clean = !data.dataset.imu_clean.empty();
+  const ImuStream& imu = data.dataset.imu;
+  data.duration_s = imu.size() > 1 ? NsToS(imu.back().t_ns - imu.front().t_ns) : 0.0;
+  return data;
+}
+
+estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu) {
+  try {
+    return estimator::RunEstimator(config.estimator, MakeEstimatorInput(config, dataset, std::move(imu)));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    estimator::EstimatorResult failed;
+    failed.ok = false;
+    failed.failure_reason = std::string("estimator error: ") + e.what();
+    return failed;
+  }
+}
+
+}  // namespace
+
+nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
+                          const std::filesystem::path& dir) {
+  const Clock::time_point start = Clock::now();
+  RunSummary summary;
+  summary.seed = config.seed;
+  summary.init = config.estimator.init;
+
+  Clock::time_point t = Clock::now();
+  const RunData data = LoadData(config, options);
+  summary.duration_s = data.duration_s;
+  summary.wall.simulate_s = SecondsSince(t);
+
+  t = Clock::now();
+  const auto templates = ResolveTemplates(config, options.templates);
+  summary.wall.templates_s = SecondsSince(t);
+  t = Clock::now();
+  DetectionStage detection =
+      RunDetection(config, data.dataset, templates.get(), data.with_glitches, data.with_clean);
+  summary.wall.detect_s = SecondsSince(t);
+
+  t = Clock::now();
+  const estimator::EstimatorResult result =
+      Estimate(config, data.dataset, std::move(detection.result.cleaned));
+  summary.wall.estimate_s = SecondsSince(t);
+
+  t = Clock::now();
+  const Trajectory groundtruth = GroundTruthAtFrames(data.dataset.groundtruth, data.dataset.frames);
+  const TrajectoryEvaluation evaluation =
+      EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation);
+  summary.wall.evaluate_s = SecondsSince(t);
+
+  RunConfig resolved = config;  // ToYaml visits (non-const)
+  WriteFileAtomic(dir / "config.yaml", config::ToYaml(resolved));
+  if (options.write_trajectories) {
+    WriteFileAtomic(dir / "stamped_groundtruth.txt", TumTrajectory(groundtruth));
+    WriteFileAtomic(dir / "stamped_traj_estimate.txt", TumTrajectory(result.trajectory));
+    if (config.detector.type != detectors::DetectorType::kNone)
+      WriteFileAtomic(dir / "detections.csv",
+                      detectors::DetectionsCsv(data.dataset.imu, detection.result.flagged));
+  }
+  summary.wall.total_s = SecondsSince(start);
+  const nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
+  WriteFileAtomic(dir / "metrics.json", metrics.dump(2) + "\n");
+  return metrics;
+}
+
+}  // namespace vigil::experiments

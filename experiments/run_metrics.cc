@@ -1,0 +1,73 @@
+#include "experiments/run_metrics.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace vigil::experiments {
+namespace {
+
+nlohmann::json NumberOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * seconds / frames : 0.0; }
+
+// A number of a JSON value that may be null (NaN then).
+double Number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+
+}  // namespace
+
+nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
+                              const TrajectoryEvaluation& evaluation, const nlohmann::json& detection) {
+  nlohmann::json m;
+  m["status"] = result.ok ? "ok" : "failed";
+  m["failure_reason"] = result.ok ? "" : result.failure_reason;
+  m["seed"] = summary.seed;
+  m["duration_s"] = summary.duration_s;
+  const RunWallTimes& w = summary.wall;
+  m["wall_time_s"] = {{"simulate", w.simulate_s}, {"templates", w.templates_s}, {"detect", w.detect_s},
+                      {"estimate", w.estimate_s}, {"evaluate", w.evaluate_s},   {"total", w.total_s}};
+  const estimator::EstimatorTiming& t = result.timing;
+  m["estimator"] = {{"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
+                    {"initialized_at_s", NumberOrNull(result.initialized_at_s)},
+                    {"resets", result.resets},
+                    {"frames", result.frames},
+                    {"keyframes", result.keyframes},
+                    {"output_poses", result.trajectory.size()},
+                    {"timing",
+                     {{"optimize_s", t.optimize_s},
+                      {"marginalize_s", t.marginalize_s},
+                      {"initialize_s", t.initialize_s},
+                      {"optimizations", t.optimizations},
+                      {"marginalizations", t.marginalizations},
+                      {"optimize_ms_per_frame", PerFrameMs(t.optimize_s, result.frames)},
+                      {"marginalize_ms_per_frame", PerFrameMs(t.marginalize_s, result.frames)},
+                      {"estimate_ms_per_frame", PerFrameMs(w.estimate_s, result.frames)}}}};
+  m.update(EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
+  m["detection"] = detection;
+  return m;
+}
+
+std::string RunSummaryLine(const nlohmann::json& m) {
+  std::string s = m.at("status").get<std::string>();
+  const std::string reason = m.at("failure_reason").get<std::string>();
+  if (!reason.empty()) s += " (" + reason + ")";
+  char buf[256];
+  const nlohmann::json& ate = m.at("ate");
+  std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
+                Number(ate.at("trans_m").at("rmse")), ate.at("align").get<std::string>().c_str(),
+                100.0 * Number(m.at("coverage")));
+  s += buf;
+  if (!m.at("relative").empty()) {
+    const nlohmann::json& r = m.at("relative").front();
+    std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", Number(r.at("distance_m")),
+                  Number(r.at("trans_m").at("mean")), Number(r.at("yaw_deg").at("mean")));
+    s += buf;
+  }
+  std::snprintf(buf, sizeof(buf), ", detector %s, wall %.2f s",
+                m.at("detection").value("detector", std::string("none")).c_str(),
+                Number(m.at("wall_time_s").at("total")));
+  return s + buf;
+}
+
+}  // namespace vigil::experiments

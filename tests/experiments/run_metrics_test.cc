@@ -1,0 +1,38 @@
+#include "experiments/run_metrics.h"
+
+#include <gtest/gtest.h>
+
+namespace vigil::experiments {
+namespace {
+
+TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
+  RunSummary summary;
+  summary.seed = 3;
+  summary.duration_s = 20.0;
+  summary.wall.total_s = 1.5;
+  estimator::EstimatorResult result;
+  result.ok = false;
+  result.failure_reason = "diverged: |b_a| > 2.5";
+  result.frames = 100;
+  result.timing.optimize_s = 0.2;
+  const nlohmann::json detection = {{"detector", "none"}, {"flagged_samples", 0}};
+  const nlohmann::json m = RunMetricsJson(summary, result, TrajectoryEvaluation{}, detection);
+  EXPECT_EQ(m["status"], "failed");
+  EXPECT_EQ(m["failure_reason"], "diverged: |b_a| > 2.5");
+  EXPECT_EQ(m["seed"], 3);
+  EXPECT_EQ(m["duration_s"], 20.0);
+  for (const char* key : {"simulate", "detect", "estimate", "evaluate", "total"})
+    EXPECT_TRUE(m["wall_time_s"].contains(key)) << key;
+  for (const char* key : {"init", "initialized_at_s", "resets", "frames", "keyframes"})
+    EXPECT_TRUE(m["estimator"].contains(key)) << key;
+  EXPECT_TRUE(m["estimator"]["initialized_at_s"].is_null());  // never initialized
+  EXPECT_DOUBLE_EQ(m["estimator"]["timing"]["optimize_ms_per_frame"], 2.0);
+  EXPECT_TRUE(m.contains("ate") && m.contains("relative") && m.contains("coverage"));
+  EXPECT_EQ(m["detection"]["detector"], "none");
+  const std::string line = RunSummaryLine(m);
+  EXPECT_NE(line.find("failed (diverged: |b_a| > 2.5)"), std::string::npos) << line;
+  EXPECT_NE(line.find("wall 1.50 s"), std::string::npos) << line;
+}
+
+}  // namespace
+}  // namespace vigil::experiments
