@@ -1,0 +1,205 @@
+#include "estimator/estimator.h"
+
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "core/format.h"
+#include "estimator/imu_interval.h"
+
+namespace vigil::estimator {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool AllFinite(const NavState& s) {
+  return s.p_W.allFinite() && s.q_WB.coeffs().allFinite() && s.v_W.allFinite() && s.b_a.allFinite() &&
+         s.b_g.allFinite();
+}
+
+}  // namespace
+
+NavState Estimator::Frame::State() const {
+  NavState s;
+  s.t_ns = t_ns;
+  s.p_W = PoseP(pose);
+  s.q_WB = PoseQ(pose).normalized();
+  s.v_W = Eigen::Map<const Eigen::Vector3d>(speed_bias);
+  s.b_a = Eigen::Map<const Eigen::Vector3d>(speed_bias + 3);
+  s.b_g = Eigen::Map<const Eigen::Vector3d>(speed_bias + 6);
+  return s;
+}
+
+void Estimator::Frame::SetState(const NavState& s) {
+  Eigen::Map<Eigen::Vector3d> p(pose), v(speed_bias), b_a(speed_bias + 3), b_g(speed_bias + 6);
+  Eigen::Map<Eigen::Quaterniond> q(pose + 3);
+  p = s.p_W;
+  q = s.q_WB.normalized();
+  v = s.v_W;
+  b_a = s.b_a;
+  b_g = s.b_g;
+}
+
+Estimator::Estimator(const EstimatorOptions& options, const CameraModel& camera,
+                     const ImuNoiseDensities& noise, double gravity_mps2, double imu_rate_hz,
+                     std::unique_ptr<Initializer> initializer)
+    : options_(options),
+      camera_(camera),
+      T_BC_(camera.T_BC_iso()),
+      noise_(noise),
+      g_W_(0.0, 0.0, -gravity_mps2),
+      imu_rate_hz_(imu_rate_hz),
+      initializer_(std::move(initializer)),
+      features_(options.features),
+      loss_(options.features.cauchy_scale) {}
+
+Estimator::~Estimator() = default;
+
+NavState Estimator::newest_state() const { return window_.back()->State(); }
+
+const Estimator::Frame& Estimator::FrameById(uint64_t id) const {
+  for (const auto& f : window_)
+    if (f->id == id) return *f;
+  return *window_.back();  // unreachable for ids of window frames
+}
+
+Eigen::Isometry3d Estimator::T_WC(uint64_t frame_id) const {
+  const Frame& f = FrameById(frame_id);
+  Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
+  T_WB.linear() = PoseQ(f.pose).normalized().toRotationMatrix();
+  T_WB.translation() = PoseP(f.pose);
+  return T_WB * T_BC_;
+}
+
+CameraPoseLookup Estimator::CameraPoses() const {
+  return [this](uint64_t id) { return T_WC(id); };
+}
+
+void Estimator::Predict(Frame* frame) const {
+  const Frame& prev = *window_.back();
+  const NavState s = prev.State();
+  const Preintegration& pre = *frame->imu_from_prev;
+  const double T = pre.sum_dt_s();
+  NavState next = s;
+  next.t_ns = frame->t_ns;
+  next.p_W = s.p_W + s.v_W * T + 0.5 * g_W_ * T * T + s.q_WB * pre.delta_p();
+  next.v_W = s.v_W + g_W_ * T + s.q_WB * pre.delta_v();
+  next.q_WB = (s.q_WB * pre.delta_q()).normalized();
+  frame->SetState(next);
+}
+
+FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n,
+                                const ImuStream& imu) {
+  auto frame = std::make_unique<Frame>();
+  frame->id = next_frame_id_++;
+  frame->t_ns = t_ns;
+  frame->features_n = features_n;
+  if (!window_.empty()) {
+    const NavState prev = window_.back()->State();
+    frame->imu_from_prev =
+        PreintegrateInterval(imu, window_.back()->t_ns, t_ns, prev.b_a, prev.b_g, noise_, imu_rate_hz_);
+    if (initialized_) Predict(frame.get());
+  }
+  const int tracked = features_.AddFrame(frame->id, features_n);
+  window_.push_back(std::move(frame));
+
+  // Is the second newest frame a keyframe? (then the oldest frame leaves the window, else the second newest)
+  const std::size_t n = window_.size();
+  const bool keyframe = n < 3 || tracked < options_.window.min_tracked_features ||
+                        features_.MeanParallax(window_[n - 3]->id, window_[n - 2]->id) >=
+                            options_.window.min_parallax_px / camera_.fx;
+  const bool full = static_cast<int>(n) >= WindowCapacity();
+
+  if (!initialized_) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool ok = TryInitialize();
+    timing_.initialize_s += SecondsSince(start);
+    if (!ok) {
+      if (full) Slide(keyframe, /*with_prior=*/false);
+      return FrameStatus::kWaitingForInit;
+    }
+  }
+
+  const Eigen::Vector3d previous_p_W = n >= 2 ? window_[n - 2]->State().p_W : window_.back()->State().p_W;
+  features_.Triangulate(CameraPoses());
+  std::string reason;
+  const auto start = std::chrono::steady_clock::now();
+  const bool solved = Optimize(keyframe && full, &reason);
+  timing_.optimize_s += SecondsSince(start);
+  ++timing_.optimizations;
+  if (solved) {
+    features_.RemoveOutliers(CameraPoses(), camera_.fx);
+    reason = DetectFailure(previous_p_W);
+  }
+  if (!reason.empty()) {
+    if (initializer_->CanReinitialize()) {
+      Reset();
+      ++resets_;
+      return FrameStatus::kReset;
+    }
+    failure_reason_ = "at t = " + FormatFixed(NsToS(t_ns), 3) + " s: " + reason;
+    return FrameStatus::kFailed;
+  }
+  if (full) {
+    const auto marg_start = std::chrono::steady_clock::now();
+    Slide(keyframe, /*with_prior=*/true);
+    timing_.marginalize_s += SecondsSince(marg_start);
+    ++timing_.marginalizations;
+  }
+  if (keyframe && full) ++keyframes_;
+  return FrameStatus::kTracking;
+}
+
+bool Estimator::TryInitialize() {
+  std::vector<InitFrame> init_window;
+  for (const auto& f : window_) init_window.push_back(InitFrame{f->t_ns, f->features_n, f->imu_from_prev});
+  InitResult result;
+  if (!initializer_->TryInitialize(init_window, &result)) return false;
+  if (result.states.size() != window_.size()) return false;
+  for (std::size_t i = 0; i < window_.size(); ++i) {
+    if (!AllFinite(result.states[i])) return false;
+    window_[i]->SetState(result.states[i]);
+  }
+  // Re-integrate the IMU from the initialized biases.
+  for (std::size_t i = 1; i < window_.size(); ++i)
+    window_[i]->imu_from_prev->Repropagate(result.states[i - 1].b_a, result.states[i - 1].b_g);
+  for (const auto& [id, p_W] : result.landmarks_W) features_.SetPoint(id, p_W, CameraPoses());
+  initialized_ = true;
+  if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;
+  return true;
+}
+
+std::string Estimator::DetectFailure(const Eigen::Vector3d& previous_p_W) const {
+  for (const auto& f : window_) {
+    const NavState s = f->State();
+    if (!AllFinite(s)) return "non-finite state";
+  }
+  const NavState s = window_.back()->State();
+  const FailureOptions& o = options_.failure;
+  if (s.b_a.norm() > o.max_accel_bias)
+    return "accelerometer bias norm " + FormatFixed(s.b_a.norm(), 3) + " m/s^2";
+  if (s.b_g.norm() > o.max_gyro_bias) return "gyro bias norm " + FormatFixed(s.b_g.norm(), 3) + " rad/s";
+  if ((s.p_W - previous_p_W).norm() > o.max_position_jump_m)
+    return "position jump " + FormatFixed((s.p_W - previous_p_W).norm(), 3) + " m";
+  if (std::abs(s.p_W.z() - previous_p_W.z()) > o.max_z_jump_m)
+    return "z jump " + FormatFixed(std::abs(s.p_W.z() - previous_p_W.z()), 3) + " m";
+  return "";
+}
+
+void Estimator::Reset() {
+  window_.clear();
+  features_.Clear();
+  prior_.reset();
+  initialized_ = false;
+}
+
+void Estimator::Slide(bool marginalize_oldest, bool with_prior) {
+  if (marginalize_oldest)
+    MarginalizeOldest(with_prior);
+  else
+    MarginalizeSecondNewest(with_prior);
+}
+
+}  // namespace vigil::estimator

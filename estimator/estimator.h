@@ -1,0 +1,114 @@
+// The sliding-window visual-inertial estimator (VINS-Mono design, written for vigil).
+//
+// Frame by frame: AddFrame() preintegrates the IMU since the previous frame, adds the feature observations,
+// decides whether the second newest frame is a keyframe (parallax / track count), and
+//   - before initialization, hands the window to the Initializer until it succeeds;
+//   - afterwards, triangulates new tracks, optimizes the window (IMU factors, reprojection factors with
+//   Cauchy
+//     loss, marginalization prior) with Ceres, removes outliers, checks for failure, and when the window
+//     holds size + 1 frames marginalizes the oldest frame (keyframe) or the second newest (not a keyframe).
+// The pieces live in their own files: estimator.cc (frame flow, initialization, failure handling),
+// estimator_optimize.cc (the Ceres problem), estimator_marginalize.cc (sliding the window).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ceres/loss_function.h>
+#include <Eigen/Core>
+
+#include "core/camera.h"
+#include "core/types.h"
+#include "estimator/estimator_input.h"
+#include "estimator/estimator_options.h"
+#include "estimator/feature_manager.h"
+#include "estimator/initializer.h"
+#include "estimator/marginalization.h"
+#include "estimator/pose_manifold.h"
+#include "estimator/preintegration.h"
+
+namespace vigil::estimator {
+
+// What happened to one frame.
+enum class FrameStatus {
+  kWaitingForInit,  // collected for the initializer; no state yet
+  kTracking,        // optimized; newest_state() is valid
+  kReset,           // a failure was detected and the window was cleared; re-initialization follows
+  kFailed,          // a failure that cannot be recovered (failure_reason() says why); stop feeding frames
+};
+
+class Estimator {
+ public:
+  Estimator(const EstimatorOptions& options, const CameraModel& camera, const ImuNoiseDensities& noise,
+            double gravity_mps2, double imu_rate_hz, std::unique_ptr<Initializer> initializer);
+  ~Estimator();
+
+  // Processes the camera frame at t_ns with its features (id -> normalized point). `imu` must cover the time
+  // from the previous frame to t_ns.
+  FrameStatus AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n, const ImuStream& imu);
+
+  NavState newest_state() const;
+  bool initialized() const { return initialized_; }
+  const std::string& failure_reason() const { return failure_reason_; }
+  int resets() const { return resets_; }
+  int keyframes() const { return keyframes_; }
+  const EstimatorTiming& timing() const { return timing_; }
+  std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
+
+ private:
+  struct Frame {
+    uint64_t id = 0;
+    int64_t t_ns = 0;
+    double pose[kPoseSize] = {0, 0, 0, 0, 0, 0, 1};
+    double speed_bias[kSpeedBiasSize] = {};
+    std::optional<Preintegration> imu_from_prev;
+    std::map<int, Eigen::Vector2d> features_n;
+
+    NavState State() const;
+    void SetState(const NavState& s);
+  };
+
+  bool TryInitialize();
+  void Predict(Frame* frame) const;
+  // Builds and solves the window problem; false with a reason when the solver fails.
+  bool Optimize(bool marginalize_oldest_next, std::string* reason);
+  std::string DetectFailure(const Eigen::Vector3d& previous_p_W) const;
+  // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
+  void Slide(bool marginalize_oldest, bool with_prior);
+  void MarginalizeOldest(bool with_prior);
+  void MarginalizeSecondNewest(bool with_prior);
+  void Reset();
+  Eigen::Isometry3d T_WC(uint64_t frame_id) const;
+  CameraPoseLookup CameraPoses() const;
+  const Frame& FrameById(uint64_t id) const;
+  int WindowCapacity() const { return options_.window.size + 1; }
+
+  EstimatorOptions options_;
+  CameraModel camera_;
+  Eigen::Isometry3d T_BC_;
+  ImuNoiseDensities noise_;
+  Eigen::Vector3d g_W_;
+  double imu_rate_hz_;
+  std::unique_ptr<Initializer> initializer_;
+
+  std::deque<std::unique_ptr<Frame>> window_;
+  FeatureManager features_;
+  std::shared_ptr<LinearPrior> prior_;
+  ceres::CauchyLoss loss_;
+  PoseManifold pose_manifold_;
+
+  bool initialized_ = false;
+  uint64_t next_frame_id_ = 0;
+  std::optional<int64_t> initialized_at_ns_;
+  std::string failure_reason_;
+  int resets_ = 0;
+  int keyframes_ = 0;
+  EstimatorTiming timing_;
+};
+
+}  // namespace vigil::estimator

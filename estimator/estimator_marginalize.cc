@@ -1,0 +1,86 @@
+// Sliding the window: the oldest frame (after a keyframe) or the second newest frame leaves it.
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "estimator/estimator.h"
+#include "estimator/imu_factor.h"
+#include "estimator/reprojection_factor.h"
+
+namespace vigil::estimator {
+namespace {
+
+constexpr double kEigenThreshold = 1e-8;
+
+}  // namespace
+
+void Estimator::MarginalizeOldest(bool with_prior) {
+  Frame& oldest = *window_.front();
+  if (with_prior && window_.size() >= 2) {
+    std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+    std::vector<MarginalizationTerm> terms;
+    std::set<const double*> dropped = {oldest.pose, oldest.speed_bias};
+    if (prior_) {
+      auto factor = std::make_unique<MarginalizationFactor>(prior_);
+      terms.push_back({factor.get(), nullptr, factor->parameter_blocks()});
+      costs.push_back(std::move(factor));
+    }
+    Frame& second = *window_[1];
+    {
+      auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
+      terms.push_back(
+          {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
+      costs.push_back(std::move(factor));
+    }
+    const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
+    for (auto& [id, track] : features_.tracks()) {
+      if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
+      dropped.insert(&track.inv_depth);
+      const auto& anchor = track.observations.front();
+      for (std::size_t k = 1; k < track.observations.size(); ++k) {
+        const auto& [frame_id, n] = track.observations[k];
+        auto factor = std::make_unique<ReprojectionFactor>(anchor.second, n, T_BC_, sqrt_information);
+        terms.push_back({factor.get(),
+                         &loss_,
+                         {oldest.pose, const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth}});
+        costs.push_back(std::move(factor));
+      }
+    }
+    auto prior = std::make_shared<LinearPrior>();
+    if (Marginalize(terms, dropped, kEigenThreshold, prior.get()))
+      prior_ = std::move(prior);
+    else
+      prior_.reset();
+  }
+  features_.RemoveFrame(oldest.id, CameraPoses());
+  window_.pop_front();
+  window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor
+}
+
+void Estimator::MarginalizeSecondNewest(bool with_prior) {
+  const std::size_t n = window_.size();
+  Frame& second_newest = *window_[n - 2];
+  Frame& newest = *window_[n - 1];
+  if (with_prior && prior_ &&
+      (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
+    auto factor = std::make_unique<MarginalizationFactor>(prior_);
+    const std::vector<MarginalizationTerm> terms = {{factor.get(), nullptr, factor->parameter_blocks()}};
+    auto prior = std::make_shared<LinearPrior>();
+    if (Marginalize(terms, {second_newest.pose, second_newest.speed_bias}, kEigenThreshold, prior.get()))
+      prior_ = std::move(prior);
+    else
+      prior_.reset();
+  }
+  // The newest frame's IMU now starts at the frame before the dropped one.
+  if (second_newest.imu_from_prev) {
+    Preintegration merged = *second_newest.imu_from_prev;
+    for (const Preintegration::Step& s : newest.imu_from_prev->steps()) merged.Push(s.dt_s, s.a_B, s.w_B);
+    newest.imu_from_prev = std::move(merged);
+  } else {
+    newest.imu_from_prev.reset();
+  }
+  features_.RemoveFrame(second_newest.id, CameraPoses());
+  window_.erase(window_.end() - 2);
+}
+
+}  // namespace vigil::estimator

@@ -1,0 +1,84 @@
+// The window's nonlinear least-squares problem and its Ceres solve.
+#include <memory>
+#include <vector>
+
+#include <ceres/problem.h>
+#include <ceres/solver.h>
+
+#include "estimator/estimator.h"
+#include "estimator/imu_factor.h"
+#include "estimator/reprojection_factor.h"
+
+namespace vigil::estimator {
+
+bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
+  // Re-integrate IMU factors whose bias estimate moved far from their linearization point.
+  for (std::size_t i = 1; i < window_.size(); ++i) {
+    const NavState s = window_[i - 1]->State();
+    Preintegration& pre = *window_[i]->imu_from_prev;
+    if ((s.b_a - pre.linearized_b_a()).norm() > options_.window.repropagate_accel_bias ||
+        (s.b_g - pre.linearized_b_g()).norm() > options_.window.repropagate_gyro_bias)
+      pre.Repropagate(s.b_a, s.b_g);
+  }
+
+  ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  problem_options.enable_fast_removal = false;
+  ceres::Problem problem(problem_options);
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+
+  for (const auto& f : window_) {
+    problem.AddParameterBlock(f->pose, kPoseSize, &pose_manifold_);
+    problem.AddParameterBlock(f->speed_bias, kSpeedBiasSize);
+  }
+  // Without a prior the window's gauge (position and yaw) is free: hold the oldest pose.
+  if (!prior_) problem.SetParameterBlockConstant(window_.front()->pose);
+
+  if (prior_) {
+    auto factor = std::make_unique<MarginalizationFactor>(prior_);
+    problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
+    costs.push_back(std::move(factor));
+  }
+  for (std::size_t i = 1; i < window_.size(); ++i) {
+    auto factor = std::make_unique<ImuFactor>(*window_[i]->imu_from_prev, g_W_);
+    problem.AddResidualBlock(factor.get(), nullptr, window_[i - 1]->pose, window_[i - 1]->speed_bias,
+                             window_[i]->pose, window_[i]->speed_bias);
+    costs.push_back(std::move(factor));
+  }
+  const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
+  for (auto& [id, track] : features_.tracks()) {
+    if (!features_.Usable(track)) continue;
+    const auto& anchor = track.observations.front();
+    const Frame& anchor_frame = FrameById(anchor.first);
+    for (std::size_t k = 1; k < track.observations.size(); ++k) {
+      const auto& [frame_id, n] = track.observations[k];
+      auto factor = std::make_unique<ReprojectionFactor>(anchor.second, n, T_BC_, sqrt_information);
+      problem.AddResidualBlock(factor.get(), &loss_, const_cast<double*>(anchor_frame.pose),
+                               const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth);
+      costs.push_back(std::move(factor));
+    }
+  }
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_SCHUR;
+  solver_options.trust_region_strategy_type = ceres::DOGLEG;
+  solver_options.max_num_iterations = options_.solver.max_iterations;
+  solver_options.num_threads = 1;
+  solver_options.logging_type = ceres::SILENT;
+  if (options_.solver.max_time_s > 0.0) {
+    solver_options.max_solver_time_in_seconds =
+        options_.solver.max_time_s *
+        (marginalize_oldest_next ? options_.solver.marginalize_old_time_factor : 1.0);
+  }
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) {
+    *reason = "solver failed: " + summary.message;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace vigil::estimator

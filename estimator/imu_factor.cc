@@ -1,0 +1,88 @@
+#include "estimator/imu_factor.h"
+
+#include <Eigen/Cholesky>
+
+#include "core/so3.h"
+
+namespace vigil::estimator {
+
+ImuFactor::ImuFactor(const Preintegration& pre, const Eigen::Vector3d& g_W) : pre_(pre), g_W_(g_W) {
+  const Matrix15d information = pre.covariance().inverse();
+  sqrt_information_ =
+      Eigen::LLT<Matrix15d>(0.5 * (information + information.transpose())).matrixL().transpose();
+}
+
+bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+  using Eigen::Matrix3d;
+  using Eigen::Vector3d;
+  const Vector3d p_i = PoseP(parameters[0]);
+  const Eigen::Quaterniond q_i = PoseQ(parameters[0]).normalized();
+  const Eigen::Map<const Vector3d> v_i(parameters[1]), ba_i(parameters[1] + 3), bg_i(parameters[1] + 6);
+  const Vector3d p_j = PoseP(parameters[2]);
+  const Eigen::Quaterniond q_j = PoseQ(parameters[2]).normalized();
+  const Eigen::Map<const Vector3d> v_j(parameters[3]), ba_j(parameters[3] + 3), bg_j(parameters[3] + 6);
+
+  const double T = pre_.sum_dt_s();
+  const Matrix3d Ri_T = q_i.toRotationMatrix().transpose();
+  const Vector3d dp_W = p_j - p_i - v_i * T - 0.5 * g_W_ * T * T;
+  const Vector3d dv_W = v_j - v_i - g_W_ * T;
+  const Eigen::Quaterniond gamma = pre_.CorrectedDeltaQ(bg_i);
+  const Eigen::Quaterniond q_ij = q_i.conjugate() * q_j;
+  const Eigen::Quaterniond err = gamma.conjugate() * q_ij;
+
+  Eigen::Map<Eigen::Matrix<double, 15, 1>> r(residuals);
+  r.segment<3>(kDp) = Ri_T * dp_W - pre_.CorrectedDeltaP(ba_i, bg_i);
+  r.segment<3>(kDtheta) = 2.0 * err.vec();
+  r.segment<3>(kDv) = Ri_T * dv_W - pre_.CorrectedDeltaV(ba_i, bg_i);
+  r.segment<3>(kBa) = ba_j - ba_i;
+  r.segment<3>(kBg) = bg_j - bg_i;
+  r = sqrt_information_ * r;
+  if (jacobians == nullptr) return true;
+
+  const Matrix15d& J = pre_.jacobian();
+  const Vector3d dbg = bg_i - pre_.linearized_b_g();
+  const Matrix3d dq_dbg = RightJacobian(J.block<3, 3>(kDtheta, kBg) * dbg) * J.block<3, 3>(kDtheta, kBg);
+  using RowMajor15x7 = Eigen::Matrix<double, 15, 7, Eigen::RowMajor>;
+  using RowMajor15x9 = Eigen::Matrix<double, 15, 9, Eigen::RowMajor>;
+  if (jacobians[0] != nullptr) {
+    Eigen::Map<RowMajor15x7> jac(jacobians[0]);
+    jac.setZero();
+    jac.block<3, 3>(kDp, 0) = -Ri_T;
+    jac.block<3, 3>(kDp, 3) = Skew(Ri_T * dp_W);
+    jac.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
+    jac.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
+    jac = sqrt_information_ * jac;
+  }
+  if (jacobians[1] != nullptr) {
+    Eigen::Map<RowMajor15x9> jac(jacobians[1]);
+    jac.setZero();
+    jac.block<3, 3>(kDp, 0) = -Ri_T * T;
+    jac.block<3, 3>(kDp, 3) = -J.block<3, 3>(kDp, kBa);
+    jac.block<3, 3>(kDp, 6) = -J.block<3, 3>(kDp, kBg);
+    jac.block<3, 3>(kDtheta, 6) = -QuatRight(err).bottomRightCorner<3, 3>() * dq_dbg;
+    jac.block<3, 3>(kDv, 0) = -Ri_T;
+    jac.block<3, 3>(kDv, 3) = -J.block<3, 3>(kDv, kBa);
+    jac.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
+    jac.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
+    jac.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
+    jac = sqrt_information_ * jac;
+  }
+  if (jacobians[2] != nullptr) {
+    Eigen::Map<RowMajor15x7> jac(jacobians[2]);
+    jac.setZero();
+    jac.block<3, 3>(kDp, 0) = Ri_T;
+    jac.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
+    jac = sqrt_information_ * jac;
+  }
+  if (jacobians[3] != nullptr) {
+    Eigen::Map<RowMajor15x9> jac(jacobians[3]);
+    jac.setZero();
+    jac.block<3, 3>(kDv, 0) = Ri_T;
+    jac.block<3, 3>(kBa, 3) = Matrix3d::Identity();
+    jac.block<3, 3>(kBg, 6) = Matrix3d::Identity();
+    jac = sqrt_information_ * jac;
+  }
+  return true;
+}
+
+}  // namespace vigil::estimator

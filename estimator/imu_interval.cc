@@ -1,0 +1,53 @@
+#include "estimator/imu_interval.h"
+
+#include <algorithm>
+
+namespace vigil::estimator {
+namespace {
+
+ImuStream::const_iterator FirstNotBefore(const ImuStream& imu, int64_t t_ns) {
+  return std::lower_bound(imu.begin(), imu.end(), t_ns,
+                          [](const ImuSample& s, int64_t t) { return s.t_ns < t; });
+}
+
+}  // namespace
+
+bool ImuCovers(const ImuStream& imu, int64_t t_ns) {
+  return !imu.empty() && t_ns >= imu.front().t_ns && t_ns <= imu.back().t_ns;
+}
+
+ImuSample InterpolateImu(const ImuStream& imu, int64_t t_ns) {
+  const auto hi = FirstNotBefore(imu, t_ns);
+  if (hi->t_ns == t_ns || hi == imu.begin()) {
+    ImuSample s = *hi;
+    s.t_ns = t_ns;
+    return s;
+  }
+  const ImuSample& a = *(hi - 1);
+  const ImuSample& b = *hi;
+  const double s = static_cast<double>(t_ns - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns);
+  ImuSample out;
+  out.t_ns = t_ns;
+  out.w_B = (1.0 - s) * a.w_B + s * b.w_B;
+  out.a_B = (1.0 - s) * a.a_B + s * b.a_B;
+  return out;
+}
+
+Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns,
+                                    const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                                    const ImuNoiseDensities& noise, double imu_rate_hz) {
+  const ImuSample first = InterpolateImu(imu, t0_ns);
+  Preintegration pre(first.a_B, first.w_B, b_a, b_g, noise, imu_rate_hz);
+  int64_t t_last = t0_ns;
+  for (auto it = std::upper_bound(imu.begin(), imu.end(), t0_ns,
+                                  [](int64_t t, const ImuSample&s) { return t < s.t_ns; });
+       it != imu.end() && it->t_ns < t1_ns; ++it) {
+    pre.Push(NsToS(it->t_ns - t_last), it->a_B, it->w_B);
+    t_last = it->t_ns;
+  }
+  const ImuSample last = InterpolateImu(imu, t1_ns);
+  pre.Push(NsToS(t1_ns - t_last), last.a_B, last.w_B);
+  return pre;
+}
+
+}  // namespace vigil::estimator

@@ -1,0 +1,21 @@
+// IMU samples between two camera frames: the stream is cut at the frame times, with a sample linearly
+// interpolated at each end when a frame falls between two IMU samples.
+#pragma once
+
+#include <cstdint>
+
+#include "core/types.h"
+#include "estimator/preintegration.h"
+
+namespace vigil::estimator {
+
+// Whether `imu` (time-ordered) covers t_ns.
+bool ImuCovers(const ImuStream& imu, int64_t t_ns);
+// The measurement at t_ns, linearly interpolated between its neighbours; `imu` must cover t_ns.
+ImuSample InterpolateImu(const ImuStream& imu, int64_t t_ns);
+// Preintegrates [t0_ns, t1_ns] (t0 < t1, both covered) from the bias linearization point (b_a, b_g).
+Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns,
+                                    const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                                    const ImuNoiseDensities& noise, double imu_rate_hz);
+
+}  // namespace vigil::estimator
