@@ -18,8 +18,10 @@ void AddPaperCommand(CLI::App& root) {
   };
   auto args = std::make_shared<Args>();
   args->run.AddTo(cmd);
-  cmd->add_option("--seeds", args->seeds, "seeds per cell (1, 2, ... N)", true)->check(CLI::PositiveNumber);
-  cmd->add_option("--sweep", args->sweep, "the sweep file", true);
+  cmd->add_option("--seeds", args->seeds, "seeds per cell (1, 2, ... N)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--sweep", args->sweep, "the sweep file")->capture_default_str();
   SetAction(cmd, [args] {
     experiments::SweepSpec spec = experiments::LoadSweepSpec(args->sweep);
     experiments::SetSeedCount(&spec, static_cast<uint64_t>(args->seeds));

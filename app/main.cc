@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
   AddTemplatesCommand(root);
   AddCleanCommand(root);
   AddEvalCommand(root);
+  AddSweepCommand(root);
+  AddPaperCommand(root);
   AddTablesCommand(root);
   AddRegressCommand(root);
   try {
