@@ -35,5 +35,9 @@ void AddCleanCommand(CLI::App& root);
 void AddPlotCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);
 void AddRunCommand(CLI::App& root);
+void AddSweepCommand(CLI::App& root);
+void AddTablesCommand(CLI::App& root);
+void AddPaperCommand(CLI::App& root);
+void AddRegressCommand(CLI::App& root);
 
 }  // namespace vigil::app

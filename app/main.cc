@@ -43,6 +43,10 @@ int main(int argc, char** argv) {
   AddRunCommand(root);
   AddEvalCommand(root);
   AddPlotCommand(root);
+  AddSweepCommand(root);
+  AddPaperCommand(root);
+  AddTablesCommand(root);
+  AddRegressCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -10,8 +10,10 @@ namespace vigil::experiments {
 enum class Alignment { kPosYaw, kSe3, kSim3, kNone };
 
 inline const config::EnumNames<Alignment>& AlignmentNames() {
-  static const config::EnumNames<Alignment> names = {
-      {"posyaw", Alignment::kPosYaw}, {"se3", Alignment::kSe3}, {"sim3", Alignment::kSim3}, {"none", Alignment::kNone}};
+  static const config::EnumNames<Alignment> names = {{"posyaw", Alignment::kPosYaw},
+                                                     {"se3", Alignment::kSe3},
+                                                     {"sim3", Alignment::kSim3},
+                                                     {"none", Alignment::kNone}};
   return names;
 }
 
@@ -21,7 +23,8 @@ struct EvaluationOptions {
 
   template <class V>
   void Visit(V& v) {
-    v.Enum("align", align, AlignmentNames(), "trajectory alignment before ATE: posyaw (4 DoF), se3, sim3, none");
+    v.Enum("align", align, AlignmentNames(),
+           "trajectory alignment before ATE: posyaw (4 DoF), se3, sim3, none");
     v.Field("distances_m", distances_m, "sub-trajectory lengths of the relative error [m]",
             config::Bounds::Positive());
   }

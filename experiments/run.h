@@ -11,10 +11,12 @@
 namespace vigil::experiments {
 
 struct RunOptions {
-  std::filesystem::path dataset_dir;  // read this dataset instead of simulating (empty: simulate from the config)
-  bool write_trajectories = true;     // stamped_groundtruth.txt / stamped_traj_estimate.txt / detections.csv
-  // DTW template library to use (a sweep builds one per setting and shares it). Null: detector.dtw.templates_file,
-  // else a library built from a glitch-free simulation with seed DeriveSeed(config.seed, "templates").
+  std::filesystem::path
+      dataset_dir;  // read this dataset instead of simulating (empty: simulate from the config)
+  bool write_trajectories = true;  // stamped_groundtruth.txt / stamped_traj_estimate.txt / detections.csv
+  // DTW template library to use (a sweep builds one per setting and shares it). Null:
+  // detector.dtw.templates_file, else a library built from a glitch-free simulation with seed
+  // DeriveSeed(config.seed, "templates").
   const detectors::TemplateLibrary* templates = nullptr;
 };
 
@@ -22,6 +24,7 @@ struct RunOptions {
 // exist (the caller stages and renames it). Returns the metrics.json document. Estimator divergence or an
 // exception inside the estimator gives status "failed" with its reason, not an exception; bad input throws
 // InputError.
-nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options, const std::filesystem::path& dir);
+nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
+                          const std::filesystem::path& dir);
 
 }  // namespace vigil::experiments

@@ -8,10 +8,12 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   RunConfig config;
   if (!path.empty()) {
     config::LoadFile(path, config);
-    sim::ResolveRelativePaths(std::filesystem::path(path).parent_path(), &config.sim);  // relative to the file
+    sim::ResolveRelativePaths(std::filesystem::path(path).parent_path(),
+                              &config.sim);  // relative to the file
   }
   for (const auto& o : overrides) config::ApplyOverride(o, config);
-  sim::ResolveRelativePaths(std::filesystem::current_path(), &config.sim);  // --set paths: relative to the cwd
+  sim::ResolveRelativePaths(std::filesystem::current_path(),
+                            &config.sim);  // --set paths: relative to the cwd
   ValidateRunConfig(config, path.empty() ? "--set" : path);
   return config;
 }

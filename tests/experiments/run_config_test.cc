@@ -13,11 +13,11 @@ using testing::TempDir;
 
 TEST(RunConfig, SpecKeysExistWithTheirTypes) {
   // The keys that cli.md promises to scripts and tests.
-  const RunConfig c = LoadRunConfig("", {"seed=5", "imu.rate_hz=400", "imu.noise.enabled=false", "camera.rate_hz=20",
-                                         "camera.pixel_noise_px=0.5", "glitch.enabled=true", "glitch.mean=50",
-                                         "glitch.std=10", "glitch.rate=0.02", "glitch.axes=[ax, az]",
-                                         "detector.type=none", "estimator.init=groundtruth", "evaluation.align=se3",
-                                         "evaluation.distances_m=[7, 14]"});
+  const RunConfig c = LoadRunConfig(
+      "", {"seed=5", "imu.rate_hz=400", "imu.noise.enabled=false", "camera.rate_hz=20",
+           "camera.pixel_noise_px=0.5", "glitch.enabled=true", "glitch.mean=50", "glitch.std=10",
+           "glitch.rate=0.02", "glitch.axes=[ax, az]", "detector.type=none", "estimator.init=groundtruth",
+           "evaluation.align=se3", "evaluation.distances_m=[7, 14]"});
   EXPECT_EQ(c.seed, 5u);
   EXPECT_EQ(c.sim.imu.rate_hz, 400.0);
   EXPECT_FALSE(c.sim.imu.noise.enabled);
@@ -30,9 +30,13 @@ TEST(RunConfig, SpecKeysExistWithTheirTypes) {
 TEST(RunConfig, BadKeysAreNamed) {
   EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.axes=[az, q]"}); }),
             "--set: glitch.axes: must be one of: wx, wy, wz, ax, ay, az");
-  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"imu.noise.loud=true"}); }), "--set: imu.noise.loud: unknown key");
-  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.rate=2"}); }), "--set: glitch.rate: must be in [0, 1]");
-  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.enabled=true", "glitch.axes=[]"}); }),
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"imu.noise.loud=true"}); }),
+            "--set: imu.noise.loud: unknown key");
+  EXPECT_EQ(InputErrorOf([] { LoadRunConfig("", {"glitch.rate=2"}); }),
+            "--set: glitch.rate: must be in [0, 1]");
+  EXPECT_EQ(InputErrorOf([] {
+              LoadRunConfig("", {"glitch.enabled=true", "glitch.axes=[]"});
+            }),
             "--set: glitch.axes: must name at least one axis when glitch.enabled is true");
 }
 

@@ -1,0 +1,62 @@
+// `vigil regress`: the accuracy regression gate of a sweep against a committed baseline.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/commands.h"
+#include "core/error.h"
+#include "core/output.h"
+#include "experiments/regression.h"
+#include "experiments/tables.h"
+
+namespace vigil::app {
+
+void AddRegressCommand(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "regress",
+      "compare a sweep's per-cell means with a baseline (exit 1 on a regression beyond tolerance), or record "
+      "one with --write-baseline");
+  struct Args {
+    std::string dir, baseline, write_baseline;
+    bool force = false;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("DIR", args->dir, "sweep directory")->required();
+  cmd->add_option("--baseline", args->baseline,
+                  "baseline JSON to compare with (experiments/baselines/*.json)");
+  cmd->add_option(
+      "--write-baseline", args->write_baseline,
+      "write the sweep's cells as a baseline (tolerances of --baseline when given, else defaults)");
+  cmd->add_flag("--force", args->force, "replace an existing --write-baseline file");
+  SetAction(cmd, [args] {
+    namespace ex = experiments;
+    if (args->baseline.empty() && args->write_baseline.empty())
+      throw InputError("regress: give --baseline FILE and/or --write-baseline FILE");
+    const ex::SweepSpec spec = ex::LoadSweepSpec((std::filesystem::path(args->dir) / "sweep.yaml").string());
+    const ex::SweepAggregate agg = ex::AggregateSweep(args->dir, spec, ex::SweepDistances(spec));
+    const std::vector<ex::RegressionCell> current = ex::RegressionCells(agg);
+    ex::RegressionTolerance tolerance;
+    int status = 0;
+    if (!args->baseline.empty()) {
+      std::vector<ex::RegressionCell> baseline;
+      ex::ReadBaseline(args->baseline, &baseline, &tolerance);
+      const ex::RegressionReport report = ex::CompareWithBaseline(current, baseline, tolerance);
+      std::fputs(report.text.c_str(), stdout);
+      std::fprintf(stderr, "vigil regress: %zu cells compared with %s: %zu regressed, %zu improved%s\n",
+                   report.compared, args->baseline.c_str(), report.regressions, report.improvements,
+                   report.improvements && !report.regressions ? " (consider recording a new baseline)" : "");
+      if (report.regressions) status = 1;
+    }
+    if (!args->write_baseline.empty()) {
+      std::error_code ec;
+      if (std::filesystem::exists(args->write_baseline, ec) && !args->force)
+        throw InputError(args->write_baseline + ": exists (use --force to replace it)");
+      WriteFileAtomic(args->write_baseline, ex::BaselineJson(current, tolerance, spec.path).dump(2) + "\n");
+      std::fprintf(stderr, "vigil regress: baseline of %zu cells -> %s\n", current.size(),
+                   args->write_baseline.c_str());
+    }
+    return status;
+  });
+}
+
+}  // namespace vigil::app

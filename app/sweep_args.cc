@@ -1,0 +1,41 @@
+#include "app/sweep_args.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "experiments/progress.h"
+#include "experiments/run.h"
+#include "experiments/sweep_runner.h"
+
+namespace vigil::app {
+
+void SweepArgs::AddTo(CLI::App* cmd) {
+  cmd->add_option("-o,--output", output, "sweep directory to write (runs/, results.csv, tables, summary.md)")
+      ->required();
+  cmd->add_option("-j,--jobs", threads, "runs in parallel (default: every core); each run is single-threaded")
+      ->check(CLI::NonNegativeNumber);
+  auto* resume_flag = cmd->add_flag(
+      "--resume", resume, "continue an interrupted sweep in the output directory (finished runs kept)");
+  cmd->add_flag("--force", force, "start over in a non-empty output directory (removes its runs/ and tables)")
+      ->excludes(resume_flag);
+  cmd->add_flag("-q,--quiet", quiet, "no progress bar and no closing line");
+}
+
+int SweepArgs::Run(const experiments::SweepSpec& spec, const char* command) const {
+  experiments::SweepRunOptions options;
+  options.threads = threads;
+  options.resume = resume;
+  options.force = force;
+  options.progress = !quiet && ::isatty(STDERR_FILENO) ? stderr : nullptr;
+  const experiments::SweepOutcome o = experiments::RunSweep(spec, output, options, experiments::ExecuteRun);
+  if (!quiet)
+    std::fprintf(stderr,
+                 "vigil %s: %zu runs (%zu executed, %zu resumed), %zu failed, %s -> %s/{results.csv, "
+                 "table2-4.{md,csv,tex}, summary.md}\n",
+                 command, o.total, o.executed, o.resumed, o.failed,
+                 experiments::FormatDuration(o.wall_time_s).c_str(), output.c_str());
+  return 0;
+}
+
+}  // namespace vigil::app

@@ -1,0 +1,153 @@
+#include "experiments/sweep_aggregate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/output.h"
+#include "experiments/metrics_access.h"
+#include "experiments/sweep_engine.h"
+
+namespace vigil::experiments {
+namespace fs = std::filesystem;
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+double Ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
+}  // namespace
+
+SampleStats Summarize(std::vector<double> values) {
+  SampleStats s;
+  s.n = values.size();
+  if (values.empty()) {
+    s.mean = s.std = s.median = s.min = s.max = kNaN;
+    return s;
+  }
+  std::sort(values.begin(), values.end());
+  double sum = 0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(s.n);
+  double sq = 0;
+  for (double v : values) sq += (v - s.mean) * (v - s.mean);
+  s.std = std::sqrt(sq / static_cast<double>(s.n));
+  s.median = s.n % 2 ? values[s.n / 2] : 0.5 * (values[s.n / 2 - 1] + values[s.n / 2]);
+  s.min = values.front();
+  s.max = values.back();
+  return s;
+}
+
+double CellResult::PooledReTrans(std::size_t d) const { return Ratio(re_trans_weighted[d], re_n[d]); }
+double CellResult::PooledReYaw(std::size_t d) const { return Ratio(re_yaw_weighted[d], re_n[d]); }
+double CellResult::Precision() const { return Ratio(true_flagged, flagged); }
+double CellResult::Recall() const { return Ratio(true_flagged, glitched); }
+
+void CellResult::Merge(const CellResult& o) {
+  runs += o.runs;
+  failed += o.failed;
+  missing += o.missing;
+  for (const auto& [reason, count] : o.failure_reasons) failure_reasons[reason] += count;
+  ate_rmse_m.insert(ate_rmse_m.end(), o.ate_rmse_m.begin(), o.ate_rmse_m.end());
+  if (re_n.size() < o.re_n.size()) {
+    re_trans_weighted.resize(o.re_n.size(), 0.0);
+    re_yaw_weighted.resize(o.re_n.size(), 0.0);
+    re_n.resize(o.re_n.size(), 0.0);
+    re_trans_run_means.resize(o.re_n.size());
+  }
+  for (std::size_t d = 0; d < o.re_n.size(); ++d) {
+    re_trans_weighted[d] += o.re_trans_weighted[d];
+    re_yaw_weighted[d] += o.re_yaw_weighted[d];
+    re_n[d] += o.re_n[d];
+    re_trans_run_means[d].insert(re_trans_run_means[d].end(), o.re_trans_run_means[d].begin(),
+                                 o.re_trans_run_means[d].end());
+  }
+  flagged += o.flagged;
+  glitched += o.glitched;
+  true_flagged += o.true_flagged;
+}
+
+void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances_m, CellResult* cell) {
+  const std::size_t nd = distances_m.size();
+  if (cell->re_n.size() != nd) {
+    cell->re_trans_weighted.assign(nd, 0.0);
+    cell->re_yaw_weighted.assign(nd, 0.0);
+    cell->re_n.assign(nd, 0.0);
+    cell->re_trans_run_means.assign(nd, {});
+  }
+  ++cell->runs;
+  if (IsFailed(m)) {
+    ++cell->failed;
+    std::string reason = MetricText(m, "failure_reason");
+    ++cell->failure_reasons[reason.empty() ? "(no reason given)" : reason];
+    return;
+  }
+  const double ate = MetricNumber(m, {"ate", "trans_m", "rmse"});
+  if (std::isfinite(ate)) cell->ate_rmse_m.push_back(ate);
+  for (std::size_t d = 0; d < nd; ++d) {
+    const nlohmann::json* e = RelativeEntry(m, distances_m[d]);
+    if (!e) continue;
+    const double n = MetricNumber(*e, {"trans_m", "n"});
+    const double trans = MetricNumber(*e, {"trans_m", "mean"});
+    const double yaw = MetricNumber(*e, {"yaw_deg", "mean"});
+    if (!(n > 0) || !std::isfinite(trans) || !std::isfinite(yaw)) continue;
+    cell->re_trans_weighted[d] += trans * n;
+    cell->re_yaw_weighted[d] += yaw * n;
+    cell->re_n[d] += n;
+    cell->re_trans_run_means[d].push_back(trans);
+  }
+  const double flagged = MetricNumber(m, {"detection", "flagged_samples"});
+  const double glitched = MetricNumber(m, {"detection", "glitched_samples"});
+  const double recall = MetricNumber(m, {"detection", "recall"});
+  if (std::isfinite(flagged)) cell->flagged += flagged;
+  if (std::isfinite(glitched)) {
+    cell->glitched += glitched;
+    if (std::isfinite(recall)) cell->true_flagged += std::round(recall * glitched);
+  }
+}
+
+int SweepAggregate::MethodIndex(const std::string& name) const {
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    if (methods[m] == name) return static_cast<int>(m);
+  return -1;
+}
+
+CellResult SweepAggregate::Pooled(std::size_t method) const {
+  CellResult pooled;
+  for (std::size_t g = 0; g < groups.size(); ++g) pooled.Merge(Cell(g, method));
+  return pooled;
+}
+
+SweepAggregate AggregateSweep(const fs::path& dir, const SweepSpec& spec,
+                              const std::vector<double>& distances_m, const RunVisitor& visit) {
+  SweepAggregate agg;
+  agg.distances_m = distances_m;
+  for (const auto& m : spec.methods) agg.methods.push_back(m.label);
+  const std::vector<SweepCell> cells = EnumerateCells(spec);
+  for (std::size_t c = 0; c < cells.size(); c += spec.methods.size())
+    agg.groups.push_back(CellGroupLabel(spec, cells[c]));
+  agg.cells.resize(cells.size());
+  for (auto& cell : agg.cells) {
+    cell.re_trans_weighted.assign(distances_m.size(), 0.0);
+    cell.re_yaw_weighted.assign(distances_m.size(), 0.0);
+    cell.re_n.assign(distances_m.size(), 0.0);
+    cell.re_trans_run_means.assign(distances_m.size(), {});
+  }
+  for (const SweepRunRef& run : EnumerateRuns(spec, cells)) {
+    CellResult& cell = agg.cells[run.cell];  // cells are group-major, method fastest: the same order
+    ++agg.runs;
+    const fs::path path = RunMetricsPath(dir, run.id);
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+      ++cell.runs;
+      ++cell.missing;
+      ++agg.missing;
+      if (visit) visit(run, cells[run.cell], nullptr);
+      continue;
+    }
+    const nlohmann::json metrics = nlohmann::json::parse(ReadFile(path), nullptr, false);
+    if (metrics.is_discarded()) throw InputError(path.string() + ": not valid JSON");
+    AddRunMetrics(metrics, distances_m, &cell);
+    if (visit) visit(run, cells[run.cell], &metrics);
+  }
+  return agg;
+}
+
+}  // namespace vigil::experiments

@@ -1,0 +1,154 @@
+#include "experiments/sweep_engine.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <thread>
+
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include "core/error.h"
+#include "core/output.h"
+#include "experiments/progress.h"
+
+namespace vigil::experiments {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kMetricsFile = "metrics.json";
+
+// What travels from the parallel stage to the in-order output stage.
+struct Finished {
+  std::size_t index = 0;
+  std::string metrics_text;  // exactly the committed metrics.json
+};
+
+std::string FailureMetrics(const std::string& reason) {
+  nlohmann::json j;
+  j["status"] = "failed";
+  j["failure_reason"] = reason;
+  return j.dump(2) + "\n";
+}
+
+// Leftovers of a killed sweep: staging directories and temporary files ("<name>.tmp-<pid>").
+void RemoveStaleStaging(const fs::path& runs_dir) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(runs_dir, ec))
+    if (entry.path().filename().string().find(".tmp-") != std::string::npos) stale.push_back(entry.path());
+  for (const auto& p : stale) fs::remove_all(p, ec);
+}
+
+}  // namespace
+
+bool IsFailed(const nlohmann::json& metrics) {
+  const auto it = metrics.find("status");
+  return it == metrics.end() || !it->is_string() || it->get<std::string>() != "ok";
+}
+
+fs::path RunDirectory(const fs::path& sweep_dir, const std::string& id) { return sweep_dir / "runs" / id; }
+fs::path RunMetricsPath(const fs::path& sweep_dir, const std::string& id) {
+  return RunDirectory(sweep_dir, id) / kMetricsFile;
+}
+
+SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::string>& run_ids,
+                          const RunFunction& run, const ResultFunction& on_result,
+                          const SweepEngineOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path runs_dir = sweep_dir / "runs";
+  fs::create_directories(runs_dir);
+  RemoveStaleStaging(runs_dir);
+
+  const int threads =
+      options.threads > 0 ? options.threads : static_cast<int>(tbb::info::default_concurrency());
+  SweepOutcome outcome;
+  outcome.total = run_ids.size();
+  std::atomic<std::size_t> executed{0}, resumed{0};
+  ProgressBar progress(run_ids.size(), options.progress);
+
+  std::size_t next = 0;
+  auto source = [&](tbb::flow_control& fc) -> std::size_t {
+    if (next >= run_ids.size()) {
+      fc.stop();
+      return 0;
+    }
+    return next++;
+  };
+  auto work = [&](std::size_t index) -> std::shared_ptr<Finished> {
+    auto done = std::make_shared<Finished>();
+    done->index = index;
+    const fs::path final_metrics = RunMetricsPath(sweep_dir, run_ids[index]);
+    std::error_code ec;
+    if (options.resume && fs::is_regular_file(final_metrics, ec)) {
+      done->metrics_text = ReadFile(final_metrics);
+      ++resumed;
+      progress.Finished(true, IsFailed(nlohmann::json::parse(done->metrics_text, nullptr, false)));
+      return done;
+    }
+    StagedDirectory staging(RunDirectory(sweep_dir, run_ids[index]), /*force=*/true);
+    try {
+      const nlohmann::json metrics = run(index, staging.path());
+      done->metrics_text = metrics.dump(2) + "\n";
+    } catch (const std::exception& e) {
+      done->metrics_text = FailureMetrics(e.what());
+    } catch (...) {
+      done->metrics_text = FailureMetrics("unknown exception");
+    }
+    WriteFileAtomic(staging.path() / kMetricsFile, done->metrics_text);
+    staging.Commit();
+    ++executed;
+    progress.Finished(false, IsFailed(nlohmann::json::parse(done->metrics_text, nullptr, false)));
+    return done;
+  };
+  std::size_t failed = 0;
+  auto sink = [&](std::shared_ptr<Finished> done) {
+    const nlohmann::json metrics = nlohmann::json::parse(done->metrics_text, nullptr, false);
+    if (metrics.is_discarded())
+      throw std::runtime_error(RunMetricsPath(sweep_dir, run_ids[done->index]).string() + ": not valid JSON");
+    if (IsFailed(metrics)) ++failed;
+    if (on_result) on_result(done->index, metrics);
+  };
+
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    tbb::parallel_pipeline(
+        static_cast<std::size_t>(4 * threads),
+        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
+            tbb::make_filter<std::size_t, std::shared_ptr<Finished>>(tbb::filter_mode::parallel, work) &
+            tbb::make_filter<std::shared_ptr<Finished>, void>(tbb::filter_mode::serial_in_order, sink));
+  });
+  progress.Close();
+  outcome.executed = executed;
+  outcome.resumed = resumed;
+  outcome.failed = failed;
+  outcome.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(dir.string() + ": exists and is not a directory");
+  const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
+  if (non_empty && !resume && !force)
+    throw InputError(dir.string() +
+                     ": output directory is not empty (use --resume to continue the sweep "
+                     "in it, or --force to start over)");
+  if (non_empty && force && !resume) {
+    // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
+    if (fs::exists(dir / "runs", ec) && !fs::exists(dir / "sweep.yaml", ec))
+      throw InputError(dir.string() + ": has runs/ but no sweep.yaml: not a sweep directory, not replaced");
+    fs::remove_all(dir / "runs", ec);
+    fs::remove_all(dir / "figures", ec);
+    for (const char* name : {"sweep.yaml", "results.csv", "summary.md"}) fs::remove(dir / name, ec);
+    for (const char* table : {"table2", "table3", "table4"})
+      for (const char* ext : {".md", ".csv", ".tex"}) fs::remove(dir / (std::string(table) + ext), ec);
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create output directory: " + ec.message());
+}
+
+}  // namespace vigil::experiments

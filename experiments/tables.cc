@@ -1,0 +1,163 @@
+#include "experiments/tables.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/format.h"
+#include "core/output.h"
+#include "experiments/paper_reference.h"
+#include "experiments/results_csv.h"
+
+namespace vigil::experiments {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<std::string> DistanceRows(const std::vector<double>& distances_m) {
+  std::vector<std::string> rows;
+  for (double d : distances_m) rows.push_back(FormatDouble(d) + " m");
+  return rows;
+}
+
+ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::string>& methods, bool yaw) {
+  ResultTable t;
+  t.title =
+      yaw ? "Table 4: overall relative yaw error [deg]" : "Table 3: overall relative translation error [m]";
+  t.corner = "distance";
+  t.columns = methods;
+  t.rows = DistanceRows(agg.distances_m);
+  t.decimals = yaw ? 2 : 3;
+  t.values.assign(t.rows.size(), std::vector<double>(methods.size(), kNaN));
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    const int mi = agg.MethodIndex(methods[m]);
+    if (mi < 0) continue;
+    const CellResult pooled = agg.Pooled(static_cast<std::size_t>(mi));
+    for (std::size_t d = 0; d < agg.distances_m.size(); ++d)
+      t.values[d][m] = yaw ? pooled.PooledReYaw(d) : pooled.PooledReTrans(d);
+  }
+  return t;
+}
+
+std::string Num(double v, int decimals = 3) {
+  if (!std::isfinite(v)) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+  ResultTable t;
+  t.title = "Table 2: RMSE of translation [m] (absolute trajectory error), mean over seeds";
+  t.corner = "method";
+  t.columns = agg.groups;
+  t.rows = methods;
+  t.decimals = 3;
+  t.values.assign(methods.size(), std::vector<double>(agg.groups.size(), kNaN));
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    const int mi = agg.MethodIndex(methods[m]);
+    if (mi < 0) continue;
+    for (std::size_t g = 0; g < agg.groups.size(); ++g)
+      t.values[m][g] = Summarize(agg.Cell(g, static_cast<std::size_t>(mi)).ate_rmse_m).mean;
+  }
+  return t;
+}
+
+ResultTable MakeTable3(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+  return RelativeTable(agg, methods, false);
+}
+ResultTable MakeTable4(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+  return RelativeTable(agg, methods, true);
+}
+
+std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
+  std::size_t failed = 0;
+  for (const auto& c : agg.cells) failed += c.failed;
+  std::string s = "# Sweep summary\n\n";
+  s += "Sweep: `" + spec.path + "`; base configuration `" + spec.base.string() + "`.\n\n";
+  s += std::to_string(agg.runs) + " runs (" + std::to_string(agg.groups.size()) + " groups x " +
+       std::to_string(agg.methods.size()) + " methods x " + std::to_string(spec.seeds.size()) +
+       " seeds): " + std::to_string(agg.runs - failed - agg.missing) + " ok, " + std::to_string(failed) +
+       " failed, " + std::to_string(agg.missing) + " missing.\n\n";
+  s += "Errors are over successful runs only. Relative errors are pooled over every sub-trajectory of every "
+       "run "
+       "(a run's mean weighted by its number of segments). Paper values (Long et al., IFAC 2020) in "
+       "parentheses where the row and column names match.\n\n";
+
+  const std::vector<std::string>& all = agg.methods;
+  s += "## Tables of the paper\n\n";
+  s += SideBySideMarkdown(MakeTable2(agg, all), PaperTable2()) + "\n";
+  s += SideBySideMarkdown(MakeTable3(agg, all), PaperTable3()) + "\n";
+  s += SideBySideMarkdown(MakeTable4(agg, all), PaperTable4()) + "\n";
+
+  s += "## ATE translation RMSE [m] per cell\n\n";
+  s += "| group | method | runs | ok | failed | missing | mean | std | median | min | max | detection "
+       "precision | "
+       "detection recall |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (std::size_t g = 0; g < agg.groups.size(); ++g) {
+    for (std::size_t m = 0; m < agg.methods.size(); ++m) {
+      const CellResult& c = agg.Cell(g, m);
+      const SampleStats st = Summarize(c.ate_rmse_m);
+      s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
+           std::to_string(c.ok()) + " | " + std::to_string(c.failed) + " | " + std::to_string(c.missing) +
+           " | " + Num(st.mean) + " | " + Num(st.std) + " | " + Num(st.median) + " | " + Num(st.min) + " | " +
+           Num(st.max) + " | " + Num(c.Precision()) + " | " + Num(c.Recall()) + " |\n";
+    }
+  }
+  s += "\n## Relative translation error [m] per method, pooled over groups\n\n";
+  s += "| method | distance | segments | pooled mean | std of run means | median of run means |\n"
+       "|---|---:|---:|---:|---:|---:|\n";
+  for (std::size_t m = 0; m < agg.methods.size(); ++m) {
+    const CellResult pooled = agg.Pooled(m);
+    for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
+      const SampleStats st = Summarize(pooled.re_trans_run_means[d]);
+      s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
+           FormatDouble(pooled.re_n[d]) + " | " + Num(pooled.PooledReTrans(d)) + " | " + Num(st.std) + " | " +
+           Num(st.median) + " |\n";
+    }
+  }
+  bool any_failure = false;
+  std::string failures = "\n## Failures\n\n| group | method | count | reason |\n|---|---|---:|---|\n";
+  for (std::size_t g = 0; g < agg.groups.size(); ++g)
+    for (std::size_t m = 0; m < agg.methods.size(); ++m)
+      for (const auto& [reason, count] : agg.Cell(g, m).failure_reasons) {
+        any_failure = true;
+        std::string r = reason;
+        for (char& ch : r)
+          if (ch == '|' || ch == '\n') ch = ' ';
+        failures += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(count) + " | " +
+                    r + " |\n";
+      }
+  s += any_failure ? failures : "\n## Failures\n\nNone.\n";
+  return s;
+}
+
+std::vector<double> SweepDistances(const SweepSpec& spec) {
+  return ResolveCellConfig(spec, EnumerateCells(spec).front()).evaluation.distances_m;
+}
+
+SweepAggregate WriteSweepTables(const fs::path& dir) {
+  const SweepSpec spec = LoadSweepSpec((dir / "sweep.yaml").string());
+  const std::vector<double> distances = SweepDistances(spec);
+  ResultsCsvWriter csv(dir, spec, distances);
+  const SweepAggregate agg = AggregateSweep(
+      dir, spec, distances, [&](const SweepRunRef& run, const SweepCell& cell, const nlohmann::json* m) {
+        if (m) csv.Add(run, cell, *m);
+      });
+  csv.Commit();
+  const ResultTable tables[] = {MakeTable2(agg, spec.table_methods), MakeTable3(agg, spec.table_methods),
+                                MakeTable4(agg, spec.table_methods)};
+  const char* names[] = {"table2", "table3", "table4"};
+  for (int i = 0; i < 3; ++i) {
+    WriteFileAtomic(dir / (std::string(names[i]) + ".md"), TableMarkdown(tables[i]));
+    WriteFileAtomic(dir / (std::string(names[i]) + ".csv"), TableCsv(tables[i]));
+    WriteFileAtomic(dir / (std::string(names[i]) + ".tex"), TableLatex(tables[i]));
+  }
+  WriteFileAtomic(dir / "summary.md", SummaryMarkdown(spec, agg));
+  return agg;
+}
+
+}  // namespace vigil::experiments

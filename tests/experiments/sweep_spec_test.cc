@@ -1,0 +1,132 @@
+#include "experiments/sweep_spec.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "tests/core/test_util.h"
+#include "tests/experiments/sweep_test_util.h"
+
+namespace vigil::experiments {
+namespace {
+using testing::WriteSmallSweep;
+using vigil::testing::InputErrorOf;
+using vigil::testing::TempDir;
+
+TEST(SweepSpec, GridIdsAndOverridesInOrder) {
+  TempDir dir;
+  const SweepSpec spec =
+      LoadSweepSpec(WriteSmallSweep(dir, "  trunc: threshold\n  original: {type: none}\n"));
+  ASSERT_EQ(spec.axes.size(), 1u);
+  EXPECT_EQ(spec.axes[0].key, "glitch");
+  EXPECT_EQ(spec.seeds, (std::vector<uint64_t>{1, 2, 3}));
+  EXPECT_EQ(spec.cell_count(), 4u);
+  EXPECT_EQ(spec.run_count(), 12u);
+  EXPECT_EQ(spec.table_methods, (std::vector<std::string>{"trunc", "original"}));
+  const auto cells = EnumerateCells(spec);
+  const auto runs = EnumerateRuns(spec, cells);
+  ASSERT_EQ(runs.size(), 12u);
+  EXPECT_EQ(runs[0].id, "noise_0_1-trunc-s001");
+  EXPECT_EQ(runs[5].id, "noise_0_1-original-s003");
+  EXPECT_EQ(runs[11].id, "noise_50_10-original-s003");
+  EXPECT_EQ(CellGroupLabel(spec, cells[3]), "noise_50_10");
+
+  const RunConfig c = ResolveCellConfig(spec, cells[2]);  // noise_50_10, trunc
+  EXPECT_EQ(c.sim.duration_s, 4.0);                       // base
+  EXPECT_EQ(c.sim.camera.pixel_noise_px, 0.5);            // set
+  EXPECT_EQ(c.sim.glitch.mean, 50.0);                     // axis setting, several keys
+  EXPECT_EQ(c.sim.glitch.std, 10.0);
+  EXPECT_EQ(c.sim.glitch.rate, 0.02);  // base key the setting leaves alone
+  EXPECT_EQ(c.detector.type, detectors::DetectorType::kThreshold);
+}
+
+TEST(SweepSpec, ListAxesAndSeedLists) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\n");
+  const std::string path =
+      dir.File("s.yaml",
+               "base: base.yaml\naxes:\n  camera.pixel_noise_px: [0, 1.5]\n  glitch.axes: [[az], [ax, az]]\n"
+               "methods: {hampel: hampel}\nseeds: [4, 9]\n");
+  const SweepSpec spec = LoadSweepSpec(path);
+  const auto cells = EnumerateCells(spec);
+  ASSERT_EQ(cells.size(), 4u);
+  EXPECT_EQ(RunId(spec, cells[3], 9), "pixel_noise_px_1.5-axes_ax_az-hampel-s009");
+  EXPECT_EQ(ResolveCellConfig(spec, cells[3]).sim.glitch.axes,
+            (std::vector<ImuAxis>{ImuAxis::kAx, ImuAxis::kAz}));
+  EXPECT_EQ(ResolveCellConfig(spec, cells[1]).sim.camera.pixel_noise_px, 0.0);
+}
+
+TEST(SweepSpec, ResolvedYamlReadsBackToTheSamePlan) {
+  TempDir dir;
+  const SweepSpec spec = LoadSweepSpec(WriteSmallSweep(dir, "  dtw: {type: dtw, dtw: {templates: 4}}\n"));
+  const std::string text = ResolvedSweepYaml(spec);
+  std::filesystem::create_directories(dir.path() / "resolved");
+  const std::string p = dir.File("resolved/sweep.yaml", text);
+  const SweepSpec again = LoadSweepSpec(p);
+  EXPECT_EQ(ResolvedSweepYaml(again), text);
+  const auto cells = EnumerateCells(again);
+  EXPECT_EQ(RunId(again, cells[1], 2), "noise_50_10-dtw-s002");
+  EXPECT_EQ(ResolveCellConfig(again, cells[1]).detector.dtw.templates, 4);
+  EXPECT_EQ(ResolveCellConfig(again, cells[1]).sim.glitch.mean, 50.0);
+}
+
+TEST(SweepSpec, ErrorsNameFileLineAndKey) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\n");
+  auto error = [&](const std::string& body) {
+    const std::string p = dir.File("bad.yaml", "base: base.yaml\n" + body);
+    return InputErrorOf([&] { LoadSweepSpec(p); });
+  };
+  const std::string f = (dir.path() / "bad.yaml").string();
+  EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\nsurprise: 1\n"), f + ":4: surprise: unknown key");
+  EXPECT_EQ(error("methods: {a: nonsense}\nseeds: [1]\n"),
+            f + ":2: detector.type: must be one of: none, threshold, dtw, hampel");
+  EXPECT_EQ(error("axes:\n  glitch:\n    big: {mean: 5, loudness: 3}\nmethods: {a: none}\nseeds: [1]\n"),
+            f + ":4: glitch.loudness: unknown key");
+  EXPECT_EQ(error("methods: {a: none}\nseeds: [1, 1]\n"), f + ":3: seeds: seeds must be distinct");
+  EXPECT_EQ(
+      error("methods: {a: none}\nseeds: [1000]\n"),
+      f + ":3: template_seed: must differ from every run seed (templates come from data the runs never see)");
+  EXPECT_EQ(error("methods: {a-b: none}\nseeds: [1]\n"),
+            f + ":2: methods.a-b: method names may use only letters, digits, '_' and '.'");
+  EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\ntable_methods: [b]\n"),
+            f + ":4: table_methods: 'b' is not one of the methods");
+  EXPECT_EQ(error("axes: {camera.pixel_noise_px: [1, 1]}\nmethods: {a: none}\nseeds: [1]\n"),
+            f + ":2: axes.camera.pixel_noise_px: two settings have the label 'pixel_noise_px_1' (use named "
+                "settings)");
+  EXPECT_EQ(error("set: {glitch.rate: 3}\nmethods: {a: none}\nseeds: [1]\n"),
+            f + ":2: glitch.rate: must be in [0, 1]");
+  EXPECT_EQ(InputErrorOf([&] {
+              LoadSweepSpec(dir.File("nobase.yaml", "base: missing.yaml\nmethods: {a: none}\nseeds: [1]\n"));
+            }).rfind((dir.path() / "nobase.yaml").string() + ":1: base: ", 0),
+            0u);
+}
+
+TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
+  const SweepSpec paper = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_sweep.yaml");
+  EXPECT_EQ(paper.run_count(), 3u * 4u * 10u);
+  EXPECT_EQ(paper.table_methods, (std::vector<std::string>{"trunc", "dtw", "original"}));
+  const auto cells = EnumerateCells(paper);
+  const auto runs = EnumerateRuns(paper, cells);
+  EXPECT_TRUE(
+      std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.id == "noise_50_10-dtw-s003"; }));
+  for (const auto& cell : cells) {
+    const RunConfig c = ResolveCellConfig(paper, cell);
+    EXPECT_TRUE(c.sim.glitch.enabled);
+    EXPECT_EQ(c.sim.duration_s, 20.0);
+  }
+  const RunConfig big = ResolveCellConfig(paper, cells[8]);  // noise_50_10 x trunc
+  EXPECT_EQ(big.sim.glitch.mean, 50.0);
+  EXPECT_EQ(big.detector.type, detectors::DetectorType::kThreshold);
+  SweepSpec ten = paper;
+  SetSeedCount(&ten, 3);
+  EXPECT_EQ(ten.seeds, (std::vector<uint64_t>{1, 2, 3}));
+  EXPECT_NE(InputErrorOf([&] { SetSeedCount(&ten, 1000); }).find("template seed 1000"), std::string::npos);
+
+  const SweepSpec ci = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/ci_sweep.yaml");
+  EXPECT_EQ(ci.run_count(), 18u);
+  EXPECT_FALSE(ci.write_trajectories);
+}
+
+}  // namespace
+}  // namespace vigil::experiments
