@@ -90,6 +90,11 @@ struct FeatureOptions {
 
 struct SolverOptions {
   int max_iterations = 8;
+  // A solve stops when an iteration changes the cost by less than this fraction. Every frame's solve starts
+  // from the previous solution, so after the first one or two steps the remaining ones change the cost by
+  // far less than the noise; Ceres' default 1e-6 runs most solves to max_iterations for nothing (measured on
+  // the paper's scenario: 5.2 -> 2.2 iterations per solve, ATE unchanged or better over 5 seeds).
+  double function_tolerance = 1e-3;
   // Per solve; 0 = no limit. VINS-Mono caps a solve at 0.04 s, but a wall-clock cap that binds makes the
   // result depend on the machine's load; vigil's default keeps runs bit-for-bit reproducible (set 0.04 for
   // the reference).
@@ -101,6 +106,10 @@ struct SolverOptions {
     using config::Bounds;
     v.Field("max_iterations", max_iterations, "Ceres iterations per solve (DENSE_SCHUR, DOGLEG)",
             Bounds::AtLeast(1));
+    v.Field("function_tolerance", function_tolerance,
+            "a solve stops when an iteration changes the cost by less than this fraction (Ceres "
+            "function_tolerance)",
+            Bounds::Closed(0.0, 1.0));
     v.Field(
         "max_time_s", max_time_s,
         "wall-clock limit per solve [s] (0: none, the default, for reproducible runs; VINS-Mono uses 0.04)",
