@@ -128,8 +128,10 @@ struct FailureOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
-    v.Field("max_accel_bias", max_accel_bias, "failure when |b_a| exceeds this [m/s^2]", Bounds::Positive());
-    v.Field("max_gyro_bias", max_gyro_bias, "failure when |b_g| exceeds this [rad/s]", Bounds::Positive());
+    v.Field("max_accel_bias", max_accel_bias, "failure when the norm of b_a exceeds this [m/s^2]",
+            Bounds::Positive());
+    v.Field("max_gyro_bias", max_gyro_bias, "failure when the norm of b_g exceeds this [rad/s]",
+            Bounds::Positive());
     v.Field("max_position_jump_m", max_position_jump_m,
             "failure when the newest position moves more than this between two frames [m]",
             Bounds::Positive());
