@@ -41,6 +41,7 @@ struct EstimatorTiming {
   double marginalize_s = 0.0;
   double initialize_s = 0.0;
   int optimizations = 0;
+  int solver_iterations = 0;  // Ceres iterations (successful and unsuccessful steps) over all solves
   int marginalizations = 0;
 };
 

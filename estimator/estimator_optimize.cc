@@ -68,6 +68,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   solver_options.linear_solver_type = ceres::DENSE_SCHUR;
   solver_options.trust_region_strategy_type = ceres::DOGLEG;
   solver_options.max_num_iterations = options_.solver.max_iterations;
+  solver_options.function_tolerance = options_.solver.function_tolerance;
   solver_options.num_threads = 1;
   solver_options.logging_type = ceres::SILENT;
   if (options_.solver.max_time_s > 0.0) {
@@ -77,6 +78,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
+  timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
     return false;

@@ -91,6 +91,11 @@ struct FeatureOptions {
 
 struct SolverOptions {
   int max_iterations = 8;
+  // A solve stops when an iteration changes the cost by less than this fraction. Every frame's solve starts
+  // from the previous solution, so after the first one or two steps the remaining ones change the cost by
+  // far less than the noise; Ceres' default 1e-6 runs most solves to max_iterations for nothing (measured on
+  // the paper's scenario: 5.2 -> 2.2 iterations per solve, ATE unchanged or better over 5 seeds).
+  double function_tolerance = 1e-3;
   // Per solve; 0 = no limit. VINS-Mono caps a solve at 0.04 s, but a wall-clock cap that binds makes the
   // result depend on the machine's load; vigil's default keeps runs bit-for-bit reproducible (set 0.04 for
   // the reference).
@@ -102,6 +107,10 @@ struct SolverOptions {
     using config::Bounds;
     v.Field("max_iterations", max_iterations, "Ceres iterations per solve (DENSE_SCHUR, DOGLEG)",
             Bounds::AtLeast(1));
+    v.Field("function_tolerance", function_tolerance,
+            "a solve stops when an iteration changes the cost by less than this fraction (Ceres "
+            "function_tolerance)",
+            Bounds::Closed(0.0, 1.0));
     v.Field(
         "max_time_s", max_time_s,
         "wall-clock limit per solve [s] (0: none, the default, for reproducible runs; VINS-Mono uses 0.04)",
@@ -120,8 +129,10 @@ struct FailureOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
-    v.Field("max_accel_bias", max_accel_bias, "failure when |b_a| exceeds this [m/s^2]", Bounds::Positive());
-    v.Field("max_gyro_bias", max_gyro_bias, "failure when |b_g| exceeds this [rad/s]", Bounds::Positive());
+    v.Field("max_accel_bias", max_accel_bias, "failure when the norm of b_a exceeds this [m/s^2]",
+            Bounds::Positive());
+    v.Field("max_gyro_bias", max_gyro_bias, "failure when the norm of b_g exceeds this [rad/s]",
+            Bounds::Positive());
     v.Field("max_position_jump_m", max_position_jump_m,
             "failure when the newest position moves more than this between two frames [m]",
             Bounds::Positive());
