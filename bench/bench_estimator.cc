@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/config.h"
+#include "core/so3.h"
 #include "estimator/run_estimator.h"
 #include "tests/estimator/sim_run.h"
 
