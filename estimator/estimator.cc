@@ -119,7 +119,7 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     const bool ok = TryInitialize();
     timing_.initialize_s += SecondsSince(start);
     if (!ok) {
-      if (full) Slide(keyframe, /*with_prior=*/false);
+      Slide(keyframe, /*with_prior=*/false);
       return FrameStatus::kWaitingForInit;
     }
   }

@@ -35,9 +35,9 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
     problem.AddParameterBlock(f->speed_bias, kSpeedBiasSize);
   }
   // Without a prior the window's gauge (position and yaw) is free: hold the oldest pose.
-  if (!prior_) problem.SetParameterBlockConstant(window_.front()->pose);
-
-  if (prior_) {
+  if (!prior_) {
+    problem.SetParameterBlockConstant(window_.front()->pose);
+  } else {
     auto factor = std::make_unique<MarginalizationFactor>(prior_);
     problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
     costs.push_back(std::move(factor));

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
-#include <Eigen/SVD>
+#include "estimator/init/triangulation.h"
 
 namespace vigil::estimator {
 
@@ -78,21 +79,20 @@ void FeatureManager::RemoveFrame(uint64_t frame_id, const CameraPoseLookup& T_WC
 void FeatureManager::Triangulate(const CameraPoseLookup& T_WC) {
   for (auto& [id, track] : tracks_) {
     if (track.has_depth || track.observations.size() < 2) continue;
-    // Homogeneous DLT in the anchor camera frame: each observation gives two rows of [P_k] x_h = 0.
+    // DLT in the anchor camera frame: each observing camera's projection of anchor-frame points.
     const Eigen::Isometry3d T_WA = T_WC(track.anchor_frame());
-    Eigen::MatrixXd A(2 * track.observations.size(), 4);
-    int row = 0;
+    std::vector<Projection> views;
+    std::vector<Eigen::Vector2d> observations;
     for (const auto& [frame, n] : track.observations) {
       const Eigen::Isometry3d T_CA = T_WC(frame).inverse() * T_WA;
-      Eigen::Matrix<double, 3, 4> P;
-      P.leftCols<3>() = T_CA.rotation();
-      P.col(3) = T_CA.translation();
-      A.row(row++) = n.x() * P.row(2) - P.row(0);
-      A.row(row++) = n.y() * P.row(2) - P.row(1);
+      Projection P;
+      P << T_CA.rotation(), T_CA.translation();
+      views.push_back(P);
+      observations.push_back(n);
     }
-    const Eigen::Vector4d x = Eigen::JacobiSVD<Eigen::MatrixXd>(A, Eigen::ComputeFullV).matrixV().col(3);
-    if (std::abs(x[3]) < 1e-12) continue;
-    const double depth = x[2] / x[3];
+    Eigen::Vector3d p_A;
+    if (!TriangulateDlt(views, observations, &p_A)) continue;
+    const double depth = p_A.z();
     if (std::isfinite(depth) && DepthInRange(depth)) {
       track.inv_depth = 1.0 / depth;
       track.has_depth = true;

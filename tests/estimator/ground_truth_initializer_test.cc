@@ -51,7 +51,6 @@ TEST(GroundTruthInitializerTest, PerturbationIsSeededAndOfTheConfiguredSize) {
   GroundTruthInitOptions options;
   options.position_std_m = 0.5;
   options.rotation_std_deg = 2.0;
-  std::vector<int64_t> times;
   InitResult a, b, c;
   std::vector<InitFrame> frames;
   for (int k = 0; k < 200; ++k) frames.push_back(InitFrame{k * 5'000'000LL, {}, std::nullopt});
