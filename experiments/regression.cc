@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "experiments/statistics.h"
 
 namespace vigil::experiments {
 namespace {
@@ -28,8 +29,8 @@ std::vector<RegressionCell> RegressionCells(const SweepAggregate& agg) {
   for (std::size_t g = 0; g < agg.groups.size(); ++g)
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
-      cells.push_back({"ate_rmse_m", agg.groups[g] + "/" + agg.methods[m], Summarize(c.ate_rmse_m).mean,
-                       static_cast<long>(c.failed + c.missing)});
+      cells.push_back({"ate_rmse_m", agg.groups[g] + "/" + agg.methods[m],
+                       ComputeStatistics(c.ate_rmse_m).mean, static_cast<long>(c.failed + c.missing)});
     }
   for (std::size_t m = 0; m < agg.methods.size(); ++m) {
     const CellResult pooled = agg.Pooled(m);

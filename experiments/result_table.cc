@@ -4,14 +4,14 @@
 #include <cstdio>
 
 namespace vigil::experiments {
-namespace {
-
-std::string Cell(double v, int decimals) {
-  if (!std::isfinite(v)) return "n/a";
+std::string FormatCell(double value, int decimals) {
+  if (!std::isfinite(value)) return "n/a";
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
   return buf;
 }
+
+namespace {
 
 std::string LatexEscape(const std::string& s) {
   std::string out;
@@ -38,7 +38,8 @@ std::string TableMarkdown(const ResultTable& t) {
   s += "\n";
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     s += "| " + t.rows[r] + " |";
-    for (std::size_t c = 0; c < t.columns.size(); ++c) s += " " + Cell(t.values[r][c], t.decimals) + " |";
+    for (std::size_t c = 0; c < t.columns.size(); ++c)
+      s += " " + FormatCell(t.values[r][c], t.decimals) + " |";
     s += "\n";
   }
   return s;
@@ -71,7 +72,7 @@ std::string TableLatex(const ResultTable& t) {
     s += LatexEscape(t.rows[r]);
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       const double v = t.values[r][c];
-      s += " & " + (std::isfinite(v) ? Cell(v, t.decimals) : std::string("--"));
+      s += " & " + (std::isfinite(v) ? FormatCell(v, t.decimals) : std::string("--"));
     }
     s += " \\\\\n";
   }
@@ -90,8 +91,8 @@ std::string SideBySideMarkdown(const ResultTable& ours, const ResultTable& ref) 
     s += "| " + ours.rows[r] + " |";
     for (std::size_t c = 0; c < ours.columns.size(); ++c) {
       const int rc = IndexOf(ref.columns, ours.columns[c]);
-      s += " " + Cell(ours.values[r][c], ours.decimals);
-      if (rr >= 0 && rc >= 0) s += " (" + Cell(ref.values[rr][rc], ref.decimals) + ")";
+      s += " " + FormatCell(ours.values[r][c], ours.decimals);
+      if (rr >= 0 && rc >= 0) s += " (" + FormatCell(ref.values[rr][rc], ref.decimals) + ")";
       s += " |";
     }
     s += "\n";

@@ -14,6 +14,10 @@ struct ResultTable {
   int decimals = 2;
 };
 
+// A value with `decimals` fixed decimals, or "n/a" when it is not finite (every table cell is written this
+// way).
+std::string FormatCell(double value, int decimals);
+
 std::string TableMarkdown(const ResultTable& table);  // a pipe table preceded by "**title**"
 std::string TableCsv(const ResultTable& table);       // "#corner,col,..." then one line per row
 std::string TableLatex(const ResultTable& table);     // table environment with booktabs rules

@@ -15,26 +15,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 double Ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
 }  // namespace
 
-SampleStats Summarize(std::vector<double> values) {
-  SampleStats s;
-  s.n = values.size();
-  if (values.empty()) {
-    s.mean = s.std = s.median = s.min = s.max = kNaN;
-    return s;
-  }
-  std::sort(values.begin(), values.end());
-  double sum = 0;
-  for (double v : values) sum += v;
-  s.mean = sum / static_cast<double>(s.n);
-  double sq = 0;
-  for (double v : values) sq += (v - s.mean) * (v - s.mean);
-  s.std = std::sqrt(sq / static_cast<double>(s.n));
-  s.median = s.n % 2 ? values[s.n / 2] : 0.5 * (values[s.n / 2 - 1] + values[s.n / 2]);
-  s.min = values.front();
-  s.max = values.back();
-  return s;
-}
-
 double CellResult::PooledReTrans(std::size_t d) const { return Ratio(re_trans_weighted[d], re_n[d]); }
 double CellResult::PooledReYaw(std::size_t d) const { return Ratio(re_yaw_weighted[d], re_n[d]); }
 double CellResult::Precision() const { return Ratio(true_flagged, flagged); }

@@ -21,12 +21,6 @@
 
 namespace vigil::experiments {
 
-struct SampleStats {
-  std::size_t n = 0;
-  double mean = 0, std = 0, median = 0, min = 0, max = 0;  // NaN when n = 0 (std: population)
-};
-SampleStats Summarize(std::vector<double> values);
-
 struct CellResult {
   std::size_t runs = 0, failed = 0, missing = 0;
   std::map<std::string, std::size_t> failure_reasons;  // reason -> count

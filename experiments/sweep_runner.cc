@@ -98,8 +98,11 @@ SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRun
         csv.Add(runs[index], cells[runs[index].cell], metrics);
       },
       engine);
-  csv.Commit();
-  if (options.write_tables) WriteSweepTables(dir);
+  csv.Commit();  // streamed in plan order above; the tables come from the same committed runs
+  if (options.write_tables) {
+    const SweepSpec written = LoadSweepSpec(sweep_file.string());  // summary.md names DIR/sweep.yaml
+    WriteTableFiles(dir, written, AggregateSweep(dir, written, configs.front().evaluation.distances_m));
+  }
   return outcome;
 }
 

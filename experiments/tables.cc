@@ -8,6 +8,7 @@
 #include "core/output.h"
 #include "experiments/paper_reference.h"
 #include "experiments/results_csv.h"
+#include "experiments/statistics.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -40,12 +41,7 @@ ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::stri
   return t;
 }
 
-std::string Num(double v, int decimals = 3) {
-  if (!std::isfinite(v)) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
+std::string Num(double v) { return FormatCell(v, 3); }
 
 }  // namespace
 
@@ -61,7 +57,7 @@ ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>
     const int mi = agg.MethodIndex(methods[m]);
     if (mi < 0) continue;
     for (std::size_t g = 0; g < agg.groups.size(); ++g)
-      t.values[m][g] = Summarize(agg.Cell(g, static_cast<std::size_t>(mi)).ate_rmse_m).mean;
+      t.values[m][g] = ComputeStatistics(agg.Cell(g, static_cast<std::size_t>(mi)).ate_rmse_m).mean;
   }
   return t;
 }
@@ -100,7 +96,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   for (std::size_t g = 0; g < agg.groups.size(); ++g) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
-      const SampleStats st = Summarize(c.ate_rmse_m);
+      const ErrorStatistics st = ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
            std::to_string(c.ok()) + " | " + std::to_string(c.failed) + " | " + std::to_string(c.missing) +
            " | " + Num(st.mean) + " | " + Num(st.std) + " | " + Num(st.median) + " | " + Num(st.min) + " | " +
@@ -113,7 +109,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   for (std::size_t m = 0; m < agg.methods.size(); ++m) {
     const CellResult pooled = agg.Pooled(m);
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
-      const SampleStats st = Summarize(pooled.re_trans_run_means[d]);
+      const ErrorStatistics st = ComputeStatistics(pooled.re_trans_run_means[d]);
       s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
            FormatDouble(pooled.re_n[d]) + " | " + Num(pooled.PooledReTrans(d)) + " | " + Num(st.std) + " | " +
            Num(st.median) + " |\n";
@@ -148,6 +144,11 @@ SweepAggregate WriteSweepTables(const fs::path& dir) {
         if (m) csv.Add(run, cell, *m);
       });
   csv.Commit();
+  WriteTableFiles(dir, spec, agg);
+  return agg;
+}
+
+void WriteTableFiles(const fs::path& dir, const SweepSpec& spec, const SweepAggregate& agg) {
   const ResultTable tables[] = {MakeTable2(agg, spec.table_methods), MakeTable3(agg, spec.table_methods),
                                 MakeTable4(agg, spec.table_methods)};
   const char* names[] = {"table2", "table3", "table4"};
@@ -157,7 +158,6 @@ SweepAggregate WriteSweepTables(const fs::path& dir) {
     WriteFileAtomic(dir / (std::string(names[i]) + ".tex"), TableLatex(tables[i]));
   }
   WriteFileAtomic(dir / "summary.md", SummaryMarkdown(spec, agg));
-  return agg;
 }
 
 }  // namespace vigil::experiments

@@ -26,6 +26,9 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg);
 // summary.md (each atomically). Returns the aggregate.
 SweepAggregate WriteSweepTables(const std::filesystem::path& dir);
 
+// table2-4 (.md, .csv, .tex) and summary.md of an aggregate, each atomically (results.csv untouched).
+void WriteTableFiles(const std::filesystem::path& dir, const SweepSpec& spec, const SweepAggregate& agg);
+
 // The distances of the relative errors of a sweep (its first cell's evaluation.distances_m).
 std::vector<double> SweepDistances(const SweepSpec& spec);
 
