@@ -69,16 +69,6 @@ void Axes::Span(double x0, double x1, const Color& color, const std::string& lab
   legend_entries_.push_back({label, color, LegendKind::kPatch, false});
 }
 
-void Axes::Band(std::vector<double> x, std::vector<double> lo, std::vector<double> hi, const Color& color,
-                const std::string& label) {
-  bands_.push_back({std::move(x), std::move(lo), std::move(hi), color});
-  legend_entries_.push_back({label, color, LegendKind::kPatch, false});
-}
-
-bool Axes::empty() const {
-  return lines_.empty() && scatters_.empty() && boxes_.empty() && spans_.empty() && bands_.empty();
-}
-
 void Axes::DataRange(double* x_lo, double* x_hi, double* y_lo, double* y_hi) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   *x_lo = *y_lo = kInf;
@@ -96,11 +86,6 @@ void Axes::DataRange(double* x_lo, double* x_hi, double* y_lo, double* y_hi) con
     Extend(b.x + b.half_width, x_lo, x_hi);
     Extend(b.stats.whisker_lo, y_lo, y_hi);
     Extend(b.stats.whisker_hi, y_lo, y_hi);
-  }
-  for (const auto& b : bands_) {
-    for (double v : b.x) Extend(v, x_lo, x_hi);
-    for (double v : b.lo) Extend(v, y_lo, y_hi);
-    for (double v : b.hi) Extend(v, y_lo, y_hi);
   }
   for (const auto& s : spans_) {
     Extend(s.x0, x_lo, x_hi);
@@ -231,14 +216,6 @@ void Axes::DrawData(Painter& painter, const Style& style) const {
     // At least one pixel wide, so that a single flagged sample stays visible.
     const double w = std::max(x1 - x0, 1.0);
     painter.FillRect({x0, L.plot.y, w, L.plot.h}, s.color);
-  }
-  for (const auto& b : bands_) {
-    std::vector<Eigen::Vector2d> upper, lower;
-    for (std::size_t i = 0; i < b.x.size() && i < b.lo.size() && i < b.hi.size(); ++i) {
-      upper.push_back(L.ToPixel(b.x[i], b.hi[i]));
-      lower.push_back(L.ToPixel(b.x[i], b.lo[i]));
-    }
-    painter.FillBand(upper, lower, b.color);
   }
   for (const auto& b : boxes_) {
     const double x0 = L.ToPixel(b.x - b.half_width, 0).x(), x1 = L.ToPixel(b.x + b.half_width, 0).x();

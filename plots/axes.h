@@ -1,4 +1,4 @@
-// 2-D axes: data series (lines, scatter, box plots, shaded spans and bands) mapped into a plot area with
+// 2-D axes: data series (lines, scatter, box plots, shaded spans) mapped into a plot area with
 // ticks at nice numbers, numeric tick labels, a title, axis labels with units and a legend.
 //
 // Ranges come from the data (padded) unless set; equal_aspect makes one metre the same number of pixels on
@@ -58,13 +58,9 @@ class Axes : public Panel {
            const std::string& label = "");
   // A vertical band x0 <= x <= x1 over the whole height.
   void Span(double x0, double x1, const Color& color, const std::string& label = "");
-  // A filled band between lo(x) and hi(x).
-  void Band(std::vector<double> x, std::vector<double> lo, std::vector<double> hi, const Color& color,
-            const std::string& label = "");
 
   void Draw(Painter& painter, const Rect& cell, const Style& style) override;
   const AxesLayout& layout() const { return layout_; }
-  bool empty() const;
 
  private:
   struct LineData {
@@ -88,10 +84,6 @@ class Axes : public Panel {
     double x0, x1;
     Color color;
   };
-  struct BandData {
-    std::vector<double> x, lo, hi;
-    Color color;
-  };
 
   void DataRange(double* x_lo, double* x_hi, double* y_lo, double* y_hi) const;
   void DrawData(Painter& painter, const Style& style) const;
@@ -100,7 +92,6 @@ class Axes : public Panel {
   std::vector<ScatterData> scatters_;
   std::vector<BoxData> boxes_;
   std::vector<SpanData> spans_;
-  std::vector<BandData> bands_;
   std::vector<LegendEntry> legend_entries_;
   std::optional<std::pair<double, double>> x_limits_, y_limits_;
   std::vector<std::pair<double, std::string>> x_categories_;

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <map>
+#include <string_view>
 
+#include "experiments/metrics_access.h"
 #include "plots/axes.h"
 #include "plots/detection_replay.h"
 #include "plots/trajectory_alignment.h"
@@ -24,10 +27,9 @@ std::vector<Eigen::Vector3d> Positions(const Trajectory& trajectory) {
   return p;
 }
 
-// stats[key] when stats is an object with a finite number there.
-bool Stat(const nlohmann::json& stats, const char* key, double* value) {
-  if (!stats.is_object() || !stats.contains(key) || !stats[key].is_number()) return false;
-  *value = stats[key].get<double>();
+// The number at `path` in a metrics document when it is there and finite.
+bool Stat(const nlohmann::json& metrics, std::initializer_list<std::string_view> path, double* value) {
+  *value = experiments::MetricNumber(metrics, path);
   return std::isfinite(*value);
 }
 
@@ -82,15 +84,15 @@ RelativeErrorRow RelativeErrorRowOfRun(const std::string& label, const RunData& 
   boxes.method = run.method;
   for (const nlohmann::json& entry : run.metrics["relative"]) {
     double d = 0.0;
-    if (!Stat(entry, "distance_m", &d)) continue;
+    if (!Stat(entry, {"distance_m"}, &d)) continue;
     BoxStats stats[2];
     bool ok = true;
     const char* keys[2] = {"trans_m", "yaw_deg"};
     for (int k = 0; k < 2; ++k) {
-      const nlohmann::json s = entry.contains(keys[k]) ? entry[keys[k]] : nlohmann::json();
       double mn, mx, mean, sd, median;
-      if (!Stat(s, "min", &mn) || !Stat(s, "max", &mx) || !Stat(s, "mean", &mean) || !Stat(s, "std", &sd) ||
-          !Stat(s, "median", &median)) {
+      if (!Stat(entry, {keys[k], "min"}, &mn) || !Stat(entry, {keys[k], "max"}, &mx) ||
+          !Stat(entry, {keys[k], "mean"}, &mean) || !Stat(entry, {keys[k], "std"}, &sd) ||
+          !Stat(entry, {keys[k], "median"}, &median)) {
         ok = false;
         break;
       }
@@ -114,8 +116,8 @@ RelativeErrorRow RelativeErrorRowOfRuns(const std::string& label, const std::vec
     if (!run->ok() || !run->metrics.contains("relative") || !run->metrics["relative"].is_array()) continue;
     for (const nlohmann::json& entry : run->metrics["relative"]) {
       double d, trans, yaw;
-      if (!Stat(entry, "distance_m", &d) || !entry.contains("trans_m") || !entry.contains("yaw_deg") ||
-          !Stat(entry["trans_m"], "mean", &trans) || !Stat(entry["yaw_deg"], "mean", &yaw)) {
+      if (!Stat(entry, {"distance_m"}, &d) || !Stat(entry, {"trans_m", "mean"}, &trans) ||
+          !Stat(entry, {"yaw_deg", "mean"}, &yaw)) {
         continue;
       }
       auto& cell = values[run->method][d];
@@ -192,9 +194,8 @@ std::vector<SummaryCell> SummaryCellsOf(const SweepData& sweep) {
       for (const RunData& run : sweep.runs) {
         if (run.method != method || !(run.glitch == sweep.settings[s])) continue;
         double trans, rot;
-        if (run.ok() && run.metrics.contains("ate") && run.metrics["ate"].contains("trans_m") &&
-            run.metrics["ate"].contains("rot_deg") && Stat(run.metrics["ate"]["trans_m"], "rmse", &trans) &&
-            Stat(run.metrics["ate"]["rot_deg"], "rmse", &rot)) {
+        if (run.ok() && Stat(run.metrics, {"ate", "trans_m", "rmse"}, &trans) &&
+            Stat(run.metrics, {"ate", "rot_deg", "rmse"}, &rot)) {
           cell.ate_trans_m.push_back(trans);
           cell.ate_rot_deg.push_back(rot);
         } else {

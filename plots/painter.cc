@@ -130,23 +130,6 @@ void Painter::StrokeRect(const Rect& rect, const Color& color, double width_px) 
   FillRect({x1 - w / 2, y0 + w / 2, w, y1 - y0 - w}, color);
 }
 
-void Painter::FillBand(const std::vector<Eigen::Vector2d>& upper, const std::vector<Eigen::Vector2d>& lower,
-                       const Color& color) {
-  const std::size_t n = std::min(upper.size(), lower.size());
-  if (n < 2) return;
-  SetColor(color);
-  glBegin(GL_TRIANGLES);
-  for (std::size_t i = 1; i < n; ++i) {
-    glVertex2d(upper[i - 1].x(), upper[i - 1].y());
-    glVertex2d(upper[i].x(), upper[i].y());
-    glVertex2d(lower[i].x(), lower[i].y());
-    glVertex2d(upper[i - 1].x(), upper[i - 1].y());
-    glVertex2d(lower[i].x(), lower[i].y());
-    glVertex2d(lower[i - 1].x(), lower[i - 1].y());
-  }
-  glEnd();
-}
-
 void Painter::Discs(const std::vector<Eigen::Vector2d>& centers, double radius_px, const Color& color) {
   SetColor(color);
   glBegin(GL_TRIANGLES);

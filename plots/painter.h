@@ -43,9 +43,6 @@ class Painter {
                 double dash_px = 0.0);
   void FillRect(const Rect& rect, const Color& color);
   void StrokeRect(const Rect& rect, const Color& color, double width_px);
-  // A filled band between two polylines sampled at the same x: upper[i] and lower[i] pair up.
-  void FillBand(const std::vector<Eigen::Vector2d>& upper, const std::vector<Eigen::Vector2d>& lower,
-                const Color& color);
   // Filled discs of radius `radius_px` at `centers`.
   void Discs(const std::vector<Eigen::Vector2d>& centers, double radius_px, const Color& color);
 

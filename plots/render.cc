@@ -1,7 +1,12 @@
 #include "plots/render.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
 
+#include "core/config.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "plots/figure_data.h"
@@ -41,6 +46,22 @@ class FigureWriter {
 };
 
 Dataset Resimulate(const RunData& run) { return sim::Simulate(run.config.sim, run.config.seed); }
+
+// Re-simulations of a sweep's runs, keyed by (simulator options, seed): runs of different methods share their
+// recording, so each recording is simulated once per rendering.
+class SimulationCache {
+ public:
+  const Dataset& Of(const RunData& run) {
+    sim::SimOptions sim = run.config.sim;  // ToYaml visits mutably
+    const auto key = std::make_pair(config::ToYaml(sim), run.config.seed);
+    auto it = cache_.find(key);
+    if (it == cache_.end()) it = cache_.emplace(key, Resimulate(run)).first;
+    return it->second;
+  }
+
+ private:
+  std::map<std::pair<std::string, uint64_t>, Dataset> cache_;
+};
 
 // The run with the smallest seed (then id) among those `keep` accepts; null when none.
 template <class Pred>
@@ -102,17 +123,18 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
   ValidateFigureOptions(options);
   const SweepData sweep = LoadSweepDirectory(sweep_dir);
   FigureWriter writer(out_dir, options);
+  SimulationCache simulations;
 
   const RunData* first = FirstRun(sweep, [](const RunData&) { return true; });
   writer.Write("fig1_scenario.png",
-               ScenarioFigure(ScenarioDataOf(Resimulate(*first), "Simulated trajectory and landmarks")));
+               ScenarioFigure(ScenarioDataOf(simulations.Of(*first), "Simulated trajectory and landmarks")));
 
   std::vector<ImuTrace> traces;
   std::vector<TrajectoryPanel> trajectory_rows;
   std::vector<RelativeErrorRow> error_rows;
   for (const GlitchSetting& setting : sweep.settings) {
     const RunData* rep = FirstRun(sweep, [&](const RunData& r) { return r.glitch == setting; });
-    traces.push_back(ImuTraceOf(Resimulate(*rep), GlitchedAxis(rep->config), setting.Label()));
+    traces.push_back(ImuTraceOf(simulations.Of(*rep), GlitchedAxis(rep->config), setting.Label()));
     std::vector<const RunData*> per_method, all;
     for (const std::string& method : sweep.methods) {
       const RunData* r = FirstRun(sweep, [&](const RunData& x) {
@@ -148,7 +170,7 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
     }
   }
   if (detected != nullptr) {
-    writer.Write("fig5_detection.png", DetectionFigure(DetectionTraceOf(*detected, Resimulate(*detected),
+    writer.Write("fig5_detection.png", DetectionFigure(DetectionTraceOf(*detected, simulations.Of(*detected),
                                                                         options.detection_excerpt_s)));
   }
 

@@ -36,6 +36,7 @@ TEST(Image, BlendMixesByCoverage) {
   image.Blend(0, 0, Color{0.0f, 0.0f, 0.0f, 1.0f}, 0.5f);
   EXPECT_NEAR(image.Pixel(0, 0)[0], 128, 1);
   image.Blend(5, 5, Color{}, 1.0f);  // outside: ignored
+  EXPECT_NEAR(image.Pixel(0, 0)[0], 128, 1);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -16,6 +17,7 @@
 #include "core/dataset.h"
 #include "core/output.h"
 #include "core/random.h"
+#include "detectors/detector.h"
 #include "experiments/run_config.h"
 #include "sim/simulator.h"
 
@@ -96,15 +98,13 @@ inline void WriteSyntheticRun(const std::filesystem::path& dir, experiments::Run
   WriteFileAtomic(dir / "metrics.json", metrics.dump(2));
   if (config.detector.type != detectors::DetectorType::kNone) {
     // Flags: the glitched samples of `data`.
-    std::string csv = "#timestamp [ns],flagged\n";
+    std::vector<uint8_t> flagged(data.imu.size(), 0);
     std::size_t g = 0;
-    for (const ImuSample& s : data.imu) {
-      bool flagged = false;
-      while (g < data.glitches.size() && data.glitches[g].t_ns <= s.t_ns)
-        flagged |= data.glitches[g++].t_ns == s.t_ns;
-      csv += std::to_string(s.t_ns) + (flagged ? ",1\n" : ",0\n");
+    for (std::size_t i = 0; i < data.imu.size(); ++i) {
+      while (g < data.glitches.size() && data.glitches[g].t_ns <= data.imu[i].t_ns)
+        flagged[i] |= data.glitches[g++].t_ns == data.imu[i].t_ns;
     }
-    WriteFileAtomic(dir / "detections.csv", csv);
+    WriteFileAtomic(dir / "detections.csv", detectors::DetectionsCsv(data.imu, flagged));
   }
 }
 
