@@ -7,16 +7,22 @@
 
 namespace vigil::experiments {
 
+detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const sim::SimOptions& scenario,
+                                                                  const detectors::DtwOptions& dtw,
+                                                                  uint64_t seed) {
+  detectors::TemplateLibrary library = detectors::BuildTemplates(sim::SimulateImu(scenario, seed).imu, dtw);
+  library.source = "glitch-free simulation, seed " + std::to_string(seed);
+  return library;
+}
+
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config) {
-  sim::SimOptions clean_sim = config.sim;
-  clean_sim.glitch.enabled = false;
   // A short run still gets a library: at least twice the k + 1 slices BuildTemplates needs.
+  sim::SimOptions scenario = config.sim;
   const detectors::DtwOptions& dtw = config.detector.dtw;
-  const double min_duration_s = 2.0 * (dtw.templates + 1) * dtw.slice_length / config.sim.imu.rate_hz;
-  clean_sim.duration_s = std::max(clean_sim.duration_s, min_duration_s);
-  const Dataset clean = sim::Simulate(clean_sim, DeriveSeed(config.seed, "templates"));
+  const double min_duration_s = 2.0 * (dtw.templates + 1) * dtw.slice_length / scenario.imu.rate_hz;
+  scenario.duration_s = std::max(scenario.duration_s, min_duration_s);
   detectors::TemplateLibrary library =
-      detectors::BuildTemplates(clean.imu_clean.empty() ? clean.imu : clean.imu_clean, config.detector.dtw);
+      BuildTemplatesFromGlitchFreeSimulation(scenario, dtw, DeriveSeed(config.seed, "templates"));
   library.source =
       "glitch-free simulation, seed DeriveSeed(" + std::to_string(config.seed) + ", \"templates\")";
   return library;

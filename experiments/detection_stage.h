@@ -6,6 +6,7 @@
 // the run's own data, so the detector learns nothing about the glitches it is scored on.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +27,12 @@ std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConf
 // The glitch-free simulation's library (the third source above): the run's scenario without glitches, seed
 // DeriveSeed(seed, "templates"), lengthened when needed to at least 2 (k + 1) slices of clean IMU.
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config);
+
+// The library of the clean IMU of `scenario` simulated with `seed` (its glitch settings play no part; only
+// the IMU is simulated). Shared by single runs (above) and sweeps.
+detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const sim::SimOptions& scenario,
+                                                                  const detectors::DtwOptions& dtw,
+                                                                  uint64_t seed);
 
 struct DetectionStage {
   detectors::DetectionResult result;  // cleaned IMU + one flag per sample

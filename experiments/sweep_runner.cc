@@ -5,9 +5,9 @@
 
 #include "core/error.h"
 #include "core/output.h"
+#include "experiments/detection_stage.h"
 #include "experiments/results_csv.h"
 #include "experiments/tables.h"
-#include "sim/simulator.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -35,13 +35,8 @@ SweepTemplates BuildSweepTemplates(const SweepSpec& spec, const std::vector<RunC
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t k) {
-      sim::SimOptions scenario = sources[k]->sim;
-      scenario.glitch = sim::GlitchOptions{};
-      const Dataset clean = sim::Simulate(scenario, spec.template_seed);
-      auto library = std::make_shared<detectors::TemplateLibrary>(
-          detectors::BuildTemplates(clean.imu_clean, sources[k]->detector.dtw));
-      library->source = "glitch-free simulation, seed " + std::to_string(spec.template_seed);
-      libraries[k] = std::move(library);
+      libraries[k] = std::make_shared<detectors::TemplateLibrary>(BuildTemplatesFromGlitchFreeSimulation(
+          sources[k]->sim, sources[k]->detector.dtw, spec.template_seed));
     });
   });
   SweepTemplates out;

@@ -23,15 +23,25 @@ std::vector<Eigen::Vector3d> SamplePath(const TrajectoryModel& motion, double du
   return path;
 }
 
-}  // namespace
-
-Dataset Simulate(const SimOptions& options, uint64_t seed) {
+// The validated motion model of `options`, covering options.duration_s.
+std::unique_ptr<TrajectoryModel> CheckedMotion(const SimOptions& options) {
   ValidateSimOptions(options, "simulator options");
-  const std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(options.trajectory);
+  std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(options.trajectory);
   if (options.duration_s > motion->EndTime())
     throw InputError("duration_s: " + FormatDouble(options.duration_s) +
                      " s exceeds the end of the trajectory (" + FormatDouble(motion->EndTime()) + " s)");
+  return motion;
+}
 
+}  // namespace
+
+ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
+  const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
+  return SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
+}
+
+Dataset Simulate(const SimOptions& options, uint64_t seed) {
+  const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
   Dataset d;
   ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
   d.imu_clean = std::move(imu.imu);

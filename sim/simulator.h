@@ -11,12 +11,18 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "sim/imu_synthesizer.h"
 #include "sim/sim_options.h"
 
 namespace vigil::sim {
 
 // Simulates one recording. Throws InputError for bad options (naming the key).
 Dataset Simulate(const SimOptions& options, uint64_t seed);
+
+// Only the first stage of Simulate(): the clean IMU stream and ground truth (no glitches, landmarks or
+// camera), bit-identical to Simulate(options, seed).imu_clean / .groundtruth. For callers that need only
+// normal motion (DTW templates). Throws InputError for bad options.
+ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed);
 
 // `vigil simulate`: simulates and writes the dataset directory `dir` (staged in a temporary sibling and
 // renamed at the end; a non-empty `dir` is refused unless `force`). `config_yaml` is written as config.yaml:
