@@ -1,14 +1,12 @@
 #include "experiments/run_command.h"
 
 #include "core/output.h"
-#include "detectors/detector.h"
 
 namespace vigil::experiments {
 
 nlohmann::json RunToDirectory(const std::string& config_path, const std::vector<std::string>& overrides,
                               const RunOptions& options, const std::filesystem::path& dir, bool force) {
   const RunConfig config = LoadRunConfig(config_path, overrides);
-  detectors::ValidateDetectorOptions(config.detector);
   StagedDirectory out(dir, force);
   const nlohmann::json metrics = ExecuteRun(config, options, out.path());
   out.Commit();

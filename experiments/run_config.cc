@@ -2,6 +2,9 @@
 
 #include <filesystem>
 
+#include "core/error.h"
+#include "detectors/detector.h"
+
 namespace vigil::experiments {
 
 RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides) {
@@ -20,6 +23,11 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
 
 void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   sim::ValidateSimOptions(config.sim, origin);
+  try {
+    detectors::ValidateDetectorOptions(config.detector);
+  } catch (const InputError& e) {
+    throw InputError(origin + ": " + e.what());
+  }
 }
 
 }  // namespace vigil::experiments
