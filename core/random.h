@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include <Eigen/Core>
+
 namespace vigil {
 
 class Rng {
@@ -26,6 +28,13 @@ class Rng {
   // Standard normal N(0, 1) (Marsaglia polar method).
   double Normal();
   double Normal(double mean, double std) { return mean + std * Normal(); }
+  // Three standard normal draws as (x, y, z), drawn in that order. Use this rather than
+  // Vector3d(Normal(), Normal(), Normal()): the order of evaluation of function arguments is unspecified, so
+  // that expression would make the stream depend on the compiler.
+  Eigen::Vector3d NormalVector3() {
+    const double x = Normal(), y = Normal(), z = Normal();
+    return Eigen::Vector3d(x, y, z);
+  }
   // True with probability p.
   bool Bernoulli(double p) { return Uniform() < p; }
 

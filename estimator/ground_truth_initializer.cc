@@ -21,9 +21,7 @@ bool GroundTruthInitializer::TryInitialize(const std::vector<InitFrame>& window,
     result->failure_reason = "empty window";
     return false;
   }
-  const auto normal3 = [this](double std) {
-    return Eigen::Vector3d(rng_.Normal(0.0, std), rng_.Normal(0.0, std), rng_.Normal(0.0, std));
-  };
+  const auto normal3 = [this](double std) { return Eigen::Vector3d(std * rng_.NormalVector3()); };
   const double rotation_std_rad = options_.rotation_std_deg * M_PI / 180.0;
   for (const InitFrame& frame : window) {
     NavState state;

@@ -25,13 +25,6 @@ ImuSample IdealImuSample(const TrajectoryState& state, double gravity_mps2, int6
   return s;
 }
 
-namespace {
-Eigen::Vector3d NormalVector(Rng& rng) {
-  const double x = rng.Normal(), y = rng.Normal(), z = rng.Normal();
-  return Eigen::Vector3d(x, y, z);
-}
-}  // namespace
-
 ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& options, double duration_s,
                            double gravity_mps2, uint64_t seed) {
   const std::vector<int64_t> times = ImuSampleTimes(options.rate_hz, duration_s);
@@ -58,8 +51,8 @@ ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& opti
     const TrajectoryState x = motion.StateAt(NsToS(t_ns));
     ImuSample s = IdealImuSample(x, gravity_mps2, t_ns);
     if (noise.enabled) {
-      const Eigen::Vector3d n_g = NormalVector(noise_rng);  // draw order: gyro xyz, then accel xyz
-      const Eigen::Vector3d n_a = NormalVector(noise_rng);
+      const Eigen::Vector3d n_g = noise_rng.NormalVector3();  // draw order: gyro xyz, then accel xyz
+      const Eigen::Vector3d n_a = noise_rng.NormalVector3();
       s.w_B += b_g + gyro_sigma * n_g;
       s.a_B += b_a + accel_sigma * n_a;
     }
@@ -73,8 +66,8 @@ ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& opti
     out.imu.push_back(s);
     out.groundtruth.push_back(gt);
     if (noise.enabled) {
-      const Eigen::Vector3d step_g = NormalVector(bias_rng);
-      const Eigen::Vector3d step_a = NormalVector(bias_rng);
+      const Eigen::Vector3d step_g = bias_rng.NormalVector3();
+      const Eigen::Vector3d step_a = bias_rng.NormalVector3();
       b_g += gyro_walk * step_g;
       b_a += accel_walk * step_a;
     }

@@ -78,9 +78,7 @@ std::vector<double> Pose(const Eigen::Vector3d& p, const Eigen::Quaterniond& q) 
   return {p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w()};
 }
 
-Eigen::Vector3d RandomVector(Rng& rng, double scale) {
-  return Eigen::Vector3d(rng.Normal(0.0, scale), rng.Normal(0.0, scale), rng.Normal(0.0, scale));
-}
+Eigen::Vector3d RandomVector(Rng& rng, double scale) { return Eigen::Vector3d(scale * rng.NormalVector3()); }
 
 TEST(FactorJacobianTest, ImuFactor) {
   Rng rng(11, "imu_factor_test");

@@ -11,9 +11,7 @@
 
 namespace vigil::estimator::testing {
 
-inline Eigen::Vector3d RandomVector(Rng& rng, double scale) {
-  return Eigen::Vector3d(rng.Normal(), rng.Normal(), rng.Normal()) * scale;
-}
+inline Eigen::Vector3d RandomVector(Rng& rng, double scale) { return rng.NormalVector3() * scale; }
 
 // Points uniformly in a box [-half, half]^2 x [z_min, z_max] of the frame they are returned in.
 inline std::vector<Eigen::Vector3d> RandomPoints(Rng& rng, int count, double half_width, double z_min,
@@ -29,7 +27,8 @@ inline std::vector<Eigen::Vector3d> RandomPoints(Rng& rng, int count, double hal
 inline Eigen::Vector2d Observe(const Eigen::Matrix3d& R_CX, const Eigen::Vector3d& p_CX,
                                const Eigen::Vector3d& p_X, Rng& rng, double std) {
   const Eigen::Vector3d p_C = R_CX * p_X + p_CX;
-  return p_C.head<2>() / p_C.z() + Eigen::Vector2d(rng.Normal(), rng.Normal()) * std;
+  const double du = rng.Normal(), dv = rng.Normal();  // drawn in this order
+  return p_C.head<2>() / p_C.z() + Eigen::Vector2d(du, dv) * std;
 }
 
 inline double RotationErrorRad(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
