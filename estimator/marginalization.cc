@@ -1,5 +1,6 @@
 #include "estimator/marginalization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -33,6 +34,20 @@ void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, Eigen::Matri
   *r = sqrt_rho1 / (1.0 - alpha) * r0;
 }
 
+// How many of the leading dropped blocks are 1-D and coupled to no other of them in H (their columns come
+// first).
+int LeadingUncoupledScalars(const Eigen::MatrixXd& H, const std::vector<double*>& order_dropped,
+                            const std::map<const double*, int>& ambient_of) {
+  int scalars = 0;
+  while (scalars < static_cast<int>(order_dropped.size()) &&
+         TangentSize(ambient_of.at(order_dropped[scalars])) == 1)
+    ++scalars;
+  for (int i = 0; i < scalars; ++i)
+    for (int j = 0; j < scalars; ++j)
+      if (i != j && H(i, j) != 0.0) return 0;
+  return scalars;
+}
+
 }  // namespace
 
 bool LinearPrior::Involves(const double* address) const {
@@ -53,6 +68,9 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
         (dropped.count(t.blocks[k]) ? order_dropped : order_kept).push_back(t.blocks[k]);
     }
   }
+  // Dropped 1-D blocks (feature inverse depths) first: the Schur step below takes them one pivot at a time.
+  std::stable_partition(order_dropped.begin(), order_dropped.end(),
+                        [&](const double* b) { return TangentSize(ambient_of[b]) == 1; });
   std::map<const double*, int> column_of;
   int m = 0;
   for (double* b : order_dropped) {
@@ -88,14 +106,15 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
       c += tangent;
     }
     Robustify(t.loss, &r, &J);
+    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    const Eigen::VectorXd Jtr = J.transpose() * r;
     for (std::size_t k = 0, ck = 0; k < t.blocks.size(); ++k) {
       const int tk = TangentSize(sizes[k]);
       const int col_k = column_of[t.blocks[k]];
-      b.segment(col_k, tk) += J.middleCols(ck, tk).transpose() * r;
+      b.segment(col_k, tk) += Jtr.segment(ck, tk);
       for (std::size_t l = 0, cl = 0; l < t.blocks.size(); ++l) {
         const int tl = TangentSize(sizes[l]);
-        H.block(col_k, column_of[t.blocks[l]], tk, tl) +=
-            J.middleCols(ck, tk).transpose() * J.middleCols(cl, tl);
+        H.block(col_k, column_of[t.blocks[l]], tk, tl) += JtJ.block(ck, cl, tk, tl);
         cl += tl;
       }
       ck += tk;
@@ -103,18 +122,38 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
   }
   if (!H.allFinite() || !b.allFinite()) return false;
 
-  // Schur complement of the dropped block.
+  // Schur complement of the dropped blocks. The leading scalar columns that couple to no other scalar column
+  // (inverse depths: each feature's factors touch only its own depth) are eliminated one pivot at a time,
+  // touching only the entries their column reaches; the remaining dropped columns (the oldest frame's pose
+  // and speed-bias) by the eigen-decomposition. For a positive semi-definite H the Schur complement does not
+  // depend on the order of elimination nor on the generalized inverse used (pivots at or below the threshold
+  // count as zero, as dropped eigenvalues do).
+  const int scalars = LeadingUncoupledScalars(H, order_dropped, ambient_of);
+  for (int i = 0; i < scalars; ++i) {
+    const double pivot = H(i, i);
+    if (!(pivot > eigen_threshold)) continue;
+    std::vector<int> reach;
+    for (int j = scalars; j < m + n; ++j)
+      if (H(j, i) != 0.0) reach.push_back(j);
+    for (const int j : reach) {
+      const double f = H(j, i) / pivot;
+      for (const int k : reach) H(j, k) -= f * H(i, k);
+      b[j] -= f * b[i];
+    }
+  }
+  const int rest = m - scalars;
   Eigen::MatrixXd A = H.bottomRightCorner(n, n);
   Eigen::VectorXd bk = b.tail(n);
-  if (m > 0) {
-    const Eigen::MatrixXd Hmm = 0.5 * (H.topLeftCorner(m, m) + H.topLeftCorner(m, m).transpose());
+  if (rest > 0) {
+    const Eigen::MatrixXd Hmm =
+        0.5 * (H.block(scalars, scalars, rest, rest) + H.block(scalars, scalars, rest, rest).transpose());
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hmm);
     const Eigen::VectorXd inv =
         (es.eigenvalues().array() > eigen_threshold).select(es.eigenvalues().array().inverse(), 0.0);
     const Eigen::MatrixXd Hmm_inv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
-    const Eigen::MatrixXd Hkm_Hmm_inv = H.bottomLeftCorner(n, m) * Hmm_inv;
-    A -= Hkm_Hmm_inv * H.topRightCorner(m, n);
-    bk -= Hkm_Hmm_inv * b.head(m);
+    const Eigen::MatrixXd Hkm_Hmm_inv = H.block(m, scalars, n, rest) * Hmm_inv;
+    A -= Hkm_Hmm_inv * H.block(scalars, m, rest, n);
+    bk -= Hkm_Hmm_inv * b.segment(scalars, rest);
   }
   // Square-root form of the kept block: Cholesky of A with a ridge of `eigen_threshold` (an information of
   // 1e-8 is no constraint at all but makes the unobservable gauge directions factorizable), J_p = L^T,

@@ -15,11 +15,7 @@ Preintegration::Preintegration(const Eigen::Vector3d& a0_B, const Eigen::Vector3
   // twice the variance; the sum over many steps then has the spread of the real, shared samples.
   const double var_a = 2.0 * noise.accel_noise_density * noise.accel_noise_density * imu_rate_hz;
   const double var_g = 2.0 * noise.gyro_noise_density * noise.gyro_noise_density * imu_rate_hz;
-  noise_q_.setZero();
-  noise_q_.block<3, 3>(0, 0).diagonal().setConstant(var_a);
-  noise_q_.block<3, 3>(3, 3).diagonal().setConstant(var_g);
-  noise_q_.block<3, 3>(6, 6).diagonal().setConstant(var_a);
-  noise_q_.block<3, 3>(9, 9).diagonal().setConstant(var_g);
+  noise_var_ << var_a, var_a, var_a, var_g, var_g, var_g, var_a, var_a, var_a, var_g, var_g, var_g;
   Reset();
 }
 
@@ -69,44 +65,48 @@ void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eig
   const Matrix3d dacc_dba = -0.5 * (R0 + R1);
   const Matrix3d dacc_dwmid = -0.5 * R1 * a1_x * Jr * dt;  // through R1 = R0 Exp(w_mid dt)
 
-  Matrix15d F = Matrix15d::Identity();
-  F.block<3, 3>(kDp, kDtheta) = 0.5 * dt * dt * dacc_dtheta;
-  F.block<3, 3>(kDp, kDv) = Matrix3d::Identity() * dt;
-  F.block<3, 3>(kDp, kBa) = 0.5 * dt * dt * dacc_dba;
-  F.block<3, 3>(kDp, kBg) = -0.5 * dt * dt * dacc_dwmid;
-  F.block<3, 3>(kDtheta, kDtheta) = R_step.transpose();
-  F.block<3, 3>(kDtheta, kBg) = -Jr * dt;
-  F.block<3, 3>(kDv, kDtheta) = dt * dacc_dtheta;
-  F.block<3, 3>(kDv, kBa) = dt * dacc_dba;
-  F.block<3, 3>(kDv, kBg) = -dt * dacc_dwmid;
+  // Transition F = I + N of the error state [dp, dtheta, dv, b_a, b_g]: only the first nine rows of N are
+  // non-zero (the biases are constant within a step), so F J = J + [N9 J; 0] and F P F^T = M + [M N9^T, 0]
+  // with M = F P -- a third of the flops of the dense products.
+  Eigen::Matrix<double, 9, 15> N9 = Eigen::Matrix<double, 9, 15>::Zero();
+  N9.block<3, 3>(kDp, kDtheta) = 0.5 * dt * dt * dacc_dtheta;
+  N9.block<3, 3>(kDp, kDv) = Matrix3d::Identity() * dt;
+  N9.block<3, 3>(kDp, kBa) = 0.5 * dt * dt * dacc_dba;
+  N9.block<3, 3>(kDp, kBg) = -0.5 * dt * dt * dacc_dwmid;
+  N9.block<3, 3>(kDtheta, kDtheta) = R_step.transpose() - Matrix3d::Identity();
+  N9.block<3, 3>(kDtheta, kBg) = -Jr * dt;
+  N9.block<3, 3>(kDv, kDtheta) = dt * dacc_dtheta;
+  N9.block<3, 3>(kDv, kBa) = dt * dacc_dba;
+  N9.block<3, 3>(kDv, kBg) = -dt * dacc_dwmid;
 
-  // Noise input [n_a0, n_g0, n_a1, n_g1, n_ba, n_bg]: noise on a measurement acts like minus a bias change on
-  // that sample alone; each gyro sample carries half of w_mid.
-  Eigen::Matrix<double, 15, 18> G = Eigen::Matrix<double, 15, 18>::Zero();
+  // Noise input [n_a0, n_g0, n_a1, n_g1] into the first nine rows (G9); noise on a measurement acts like
+  // minus a bias change on that sample alone, each gyro sample carries half of w_mid. The bias random walks
+  // enter the bias rows directly.
+  Eigen::Matrix<double, 9, 12> G9 = Eigen::Matrix<double, 9, 12>::Zero();
   const Matrix3d dacc_dna0 = 0.5 * R0;
   const Matrix3d dacc_dna1 = 0.5 * R1;
   const Matrix3d dacc_dng = 0.5 * dacc_dwmid;
-  G.block<3, 3>(kDp, 0) = 0.5 * dt * dt * dacc_dna0;
-  G.block<3, 3>(kDp, 3) = 0.5 * dt * dt * dacc_dng;
-  G.block<3, 3>(kDp, 6) = 0.5 * dt * dt * dacc_dna1;
-  G.block<3, 3>(kDp, 9) = 0.5 * dt * dt * dacc_dng;
-  G.block<3, 3>(kDtheta, 3) = 0.5 * Jr * dt;
-  G.block<3, 3>(kDtheta, 9) = 0.5 * Jr * dt;
-  G.block<3, 3>(kDv, 0) = dt * dacc_dna0;
-  G.block<3, 3>(kDv, 3) = dt * dacc_dng;
-  G.block<3, 3>(kDv, 6) = dt * dacc_dna1;
-  G.block<3, 3>(kDv, 9) = dt * dacc_dng;
-  G.block<3, 3>(kBa, 12).setIdentity();
-  G.block<3, 3>(kBg, 15).setIdentity();
+  G9.block<3, 3>(kDp, 0) = 0.5 * dt * dt * dacc_dna0;
+  G9.block<3, 3>(kDp, 3) = 0.5 * dt * dt * dacc_dng;
+  G9.block<3, 3>(kDp, 6) = 0.5 * dt * dt * dacc_dna1;
+  G9.block<3, 3>(kDp, 9) = 0.5 * dt * dt * dacc_dng;
+  G9.block<3, 3>(kDtheta, 3) = 0.5 * Jr * dt;
+  G9.block<3, 3>(kDtheta, 9) = 0.5 * Jr * dt;
+  G9.block<3, 3>(kDv, 0) = dt * dacc_dna0;
+  G9.block<3, 3>(kDv, 3) = dt * dacc_dng;
+  G9.block<3, 3>(kDv, 6) = dt * dacc_dna1;
+  G9.block<3, 3>(kDv, 9) = dt * dacc_dng;
 
-  Eigen::Matrix<double, 18, 18> Q = noise_q_;
-  Q.block<3, 3>(12, 12).diagonal().setConstant(noise_.accel_bias_random_walk * noise_.accel_bias_random_walk *
-                                               dt);
-  Q.block<3, 3>(15, 15).diagonal().setConstant(noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk *
-                                               dt);
-
-  jacobian_ = F * jacobian_;
-  covariance_ = F * covariance_ * F.transpose() + G * Q * G.transpose();
+  jacobian_.topRows<9>() += N9 * jacobian_;
+  Matrix15d M = covariance_;
+  M.topRows<9>() += N9 * covariance_;
+  covariance_ = M;
+  covariance_.leftCols<9>() += M * N9.transpose();
+  covariance_.topLeftCorner<9, 9>() += G9 * noise_var_.asDiagonal() * G9.transpose();
+  covariance_.block<3, 3>(kBa, kBa).diagonal().array() +=
+      noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt;
+  covariance_.block<3, 3>(kBg, kBg).diagonal().array() +=
+      noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk * dt;
 
   delta_p_ += delta_v_ * dt + 0.5 * acc_mid * dt * dt;
   delta_v_ += acc_mid * dt;

@@ -91,7 +91,8 @@ class Preintegration {
   ImuNoiseDensities noise_;
   double imu_rate_hz_;
   std::vector<Step> steps_;
-  Eigen::Matrix<double, 18, 18> noise_q_;  // measurement part (the bias walk part scales with each dt)
+  Eigen::Matrix<double, 12, 1>
+      noise_var_;  // per-sample variances of [a0, w0, a1, w1] (the bias walks scale with dt)
 
   // Integration state.
   Eigen::Vector3d last_a_B_, last_w_B_;
