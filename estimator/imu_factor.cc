@@ -1,16 +1,11 @@
 #include "estimator/imu_factor.h"
 
-#include <Eigen/Cholesky>
-
 #include "core/so3.h"
 
 namespace vigil::estimator {
 
-ImuFactor::ImuFactor(const Preintegration& pre, const Eigen::Vector3d& g_W) : pre_(pre), g_W_(g_W) {
-  const Matrix15d information = pre.covariance().inverse();
-  sqrt_information_ =
-      Eigen::LLT<Matrix15d>(0.5 * (information + information.transpose())).matrixL().transpose();
-}
+ImuFactor::ImuFactor(const Preintegration& pre, const Eigen::Vector3d& g_W)
+    : pre_(pre), g_W_(g_W), sqrt_information_(pre.sqrt_information()) {}
 
 bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
   using Eigen::Matrix3d;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "core/so3.h"
 
 namespace vigil::estimator {
@@ -28,6 +30,7 @@ void Preintegration::Reset() {
   delta_q_.setIdentity();
   jacobian_.setIdentity();
   covariance_.setZero();
+  sqrt_information_.reset();
 }
 
 void Preintegration::Push(double dt_s, const Eigen::Vector3d& a_B, const Eigen::Vector3d& w_B) {
@@ -114,6 +117,16 @@ void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eig
   last_a_B_ = a1_B;
   last_w_B_ = w1_B;
   sum_dt_s_ += dt;
+  sqrt_information_.reset();
+}
+
+const Matrix15d& Preintegration::sqrt_information() const {
+  if (!sqrt_information_) {
+    const Matrix15d information = covariance_.inverse();
+    sqrt_information_ =
+        Eigen::LLT<Matrix15d>(0.5 * (information + information.transpose())).matrixL().transpose();
+  }
+  return *sqrt_information_;
 }
 
 Eigen::Vector3d Preintegration::CorrectedDeltaP(const Eigen::Vector3d& b_a,

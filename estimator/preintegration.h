@@ -21,6 +21,7 @@
 // variance for the accumulated covariance to match the spread of real noise (checked by a Monte Carlo test).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -64,6 +65,9 @@ class Preintegration {
   const Eigen::Vector3d& delta_v() const { return delta_v_; }
   const Matrix15d& jacobian() const { return jacobian_; }
   const Matrix15d& covariance() const { return covariance_; }
+  // Upper-triangular S with S^T S = covariance^-1 (whitens an IMU residual); computed once per change of the
+  // deltas, since every frame's window problem builds a factor from each preintegration.
+  const Matrix15d& sqrt_information() const;
   const Eigen::Vector3d& linearized_b_a() const { return b_a_; }
   const Eigen::Vector3d& linearized_b_g() const { return b_g_; }
   // The first sample and every pushed step (to merge two preintegrations or replay them).
@@ -100,6 +104,7 @@ class Preintegration {
   Eigen::Vector3d delta_p_, delta_v_;
   Eigen::Quaterniond delta_q_;
   Matrix15d jacobian_, covariance_;
+  mutable std::optional<Matrix15d> sqrt_information_;  // cache, cleared by Reset() and Integrate()
 };
 
 }  // namespace vigil::estimator
