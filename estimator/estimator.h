@@ -24,6 +24,7 @@
 
 #include "core/camera.h"
 #include "core/types.h"
+#include "estimator/bias_prior_factor.h"
 #include "estimator/estimator_input.h"
 #include "estimator/estimator_options.h"
 #include "estimator/feature_manager.h"
@@ -100,6 +101,10 @@ class Estimator {
   std::deque<std::unique_ptr<Frame>> window_;
   FeatureManager features_;
   std::shared_ptr<LinearPrior> prior_;
+  // The initial bias prior (options_.prior) while the frame it constrains (the oldest at initialization) is
+  // in the window; when that frame is marginalized its information moves into prior_.
+  std::unique_ptr<BiasPriorFactor> bias_prior_;
+  uint64_t bias_prior_frame_id_ = 0;
   ceres::CauchyLoss loss_;
   PoseManifold pose_manifold_;
 

@@ -58,6 +58,31 @@ struct WindowOptions {
   }
 };
 
+// Prior knowledge of the IMU biases at initialization (not part of VINS-Mono, which starts its biases free;
+// OKVIS and OpenVINS-style estimators carry an initial bias uncertainty like this one). The initializer's
+// bias estimate (groundtruth: the true biases; vins: the gyroscope bias from its least squares and a zero
+// accelerometer bias) enters as a Gaussian prior on the first window's oldest frame and is carried into the
+// marginalization prior when that frame leaves the window. The defaults describe a low-cost MEMS IMU whose
+// turn-on biases were calibrated once but not at start-up (a consumer accelerometer drifts by ~0.1 m/s^2 with
+// temperature and mounting; a gyroscope by ~0.01 rad/s); 0 switches a prior off.
+struct PriorOptions {
+  double accel_bias_std = 0.1;  // [m/s^2]
+  double gyro_bias_std = 0.01;  // [rad/s]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("accel_bias_std", accel_bias_std,
+            "std of the Gaussian prior on the initial accelerometer bias (around the initializer's estimate) "
+            "[m/s^2]; 0: no prior",
+            Bounds::NonNegative());
+    v.Field("gyro_bias_std", gyro_bias_std,
+            "std of the Gaussian prior on the initial gyroscope bias (around the initializer's estimate) "
+            "[rad/s]; 0: no prior",
+            Bounds::NonNegative());
+  }
+};
+
 struct FeatureOptions {
   int min_observations = 2;      // a feature enters the optimization once seen this often in the window
   double pixel_std_px = 1.5;     // reprojection noise std: sqrt information = focal length / pixel_std_px
@@ -146,6 +171,7 @@ struct EstimatorOptions {
   GroundTruthInitOptions groundtruth_init;
   VinsInitOptions vins;
   WindowOptions window;
+  PriorOptions prior;
   FeatureOptions features;
   SolverOptions solver;
   FailureOptions failure;
@@ -159,6 +185,7 @@ struct EstimatorOptions {
     v.Section("groundtruth_init", groundtruth_init, "perturbation of the ground-truth initialization");
     v.Section("vins", vins, "visual-inertial initialization (init: vins)");
     v.Section("window", window, "sliding window and keyframe decision");
+    v.Section("prior", prior, "initial IMU bias prior (from the initializer's estimate)");
     v.Section("features", features, "feature tracks: triangulation, reprojection noise, outliers");
     v.Section("solver", solver, "Ceres solve per frame");
     v.Section("failure", failure,
