@@ -4,9 +4,9 @@
 // decides whether the second newest frame is a keyframe (parallax / track count), and
 //   - before initialization, hands the window to the Initializer until it succeeds;
 //   - afterwards, triangulates new tracks, optimizes the window (IMU factors, reprojection factors with
-//   Cauchy
-//     loss, marginalization prior) with Ceres, removes outliers, checks for failure, and when the window
-//     holds size + 1 frames marginalizes the oldest frame (keyframe) or the second newest (not a keyframe).
+//     Cauchy loss, marginalization prior, and the initial bias prior until its frame leaves the window) with
+//     Ceres, removes outliers, checks for failure, and when the window holds size + 1 frames marginalizes the
+//     oldest frame (keyframe) or the second newest (not a keyframe).
 // The pieces live in their own files: estimator.cc (frame flow, initialization, failure handling),
 // estimator_optimize.cc (the Ceres problem), estimator_marginalize.cc (sliding the window).
 #pragma once
