@@ -2,6 +2,7 @@
 #include <memory>
 #include <vector>
 
+#include <ceres/iteration_callback.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
 
@@ -11,6 +12,29 @@
 #include "estimator/reprojection_factor.h"
 
 namespace vigil::estimator {
+namespace {
+
+// Ends a solve after `steps` accepted steps (EstimatorOptions::solver.accepted_steps) once the window is
+// consistent with its noise model: a cost (1/2 the sum of squared whitened residuals) at most its
+// expectation, half the number of residuals. A window that is not (a glitch burst in its IMU factors, a
+// re-initialization on bad data) keeps iterating up to max_iterations.
+class StopAfterAcceptedSteps : public ceres::IterationCallback {
+ public:
+  StopAfterAcceptedSteps(int steps, int num_residuals) : steps_(steps), expected_cost_(0.5 * num_residuals) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    if (summary.iteration == 0 || !summary.step_is_successful) return ceres::SOLVER_CONTINUE;
+    ++accepted_;
+    if (accepted_ >= steps_ && summary.cost <= expected_cost_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  int steps_;
+  double expected_cost_;
+  int accepted_ = 0;
+};
+
+}  // namespace
 
 bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   // Re-integrate IMU factors whose bias estimate moved far from their linearization point.
@@ -79,6 +103,8 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
         options_.solver.max_time_s *
         (marginalize_oldest_next ? options_.solver.marginalize_old_time_factor : 1.0);
   }
+  StopAfterAcceptedSteps stop(options_.solver.accepted_steps, problem.NumResiduals());
+  if (options_.solver.accepted_steps > 0) solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
   timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
