@@ -168,6 +168,13 @@ bool Estimator::TryInitialize() {
   for (std::size_t i = 1; i < window_.size(); ++i)
     window_[i]->imu_from_prev->Repropagate(result.states[i - 1].b_a, result.states[i - 1].b_g);
   for (const auto& [id, p_W] : result.landmarks_W) features_.SetPoint(id, p_W, CameraPoses());
+  // The initializer's biases as a prior on the oldest frame (the bias factors carry it through the window).
+  const PriorOptions& prior = options_.prior;
+  if (prior.accel_bias_std > 0.0 || prior.gyro_bias_std > 0.0) {
+    bias_prior_ = std::make_unique<BiasPriorFactor>(result.states.front().b_a, result.states.front().b_g,
+                                                    prior.accel_bias_std, prior.gyro_bias_std);
+    bias_prior_frame_id_ = window_.front()->id;
+  }
   initialized_ = true;
   if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;
   return true;
@@ -194,6 +201,7 @@ void Estimator::Reset() {
   window_.clear();
   features_.Clear();
   prior_.reset();
+  bias_prior_.reset();
   initialized_ = false;
 }
 

@@ -4,9 +4,9 @@
 // decides whether the second newest frame is a keyframe (parallax / track count), and
 //   - before initialization, hands the window to the Initializer until it succeeds;
 //   - afterwards, triangulates new tracks, optimizes the window (IMU factors, reprojection factors with
-//   Cauchy
-//     loss, marginalization prior) with Ceres, removes outliers, checks for failure, and when the window
-//     holds size + 1 frames marginalizes the oldest frame (keyframe) or the second newest (not a keyframe).
+//     Cauchy loss, marginalization prior, and the initial bias prior until its frame leaves the window) with
+//     Ceres, removes outliers, checks for failure, and when the window holds size + 1 frames marginalizes the
+//     oldest frame (keyframe) or the second newest (not a keyframe).
 // The pieces live in their own files: estimator.cc (frame flow, initialization, failure handling),
 // estimator_optimize.cc (the Ceres problem), estimator_marginalize.cc (sliding the window).
 #pragma once
@@ -24,6 +24,7 @@
 
 #include "core/camera.h"
 #include "core/types.h"
+#include "estimator/bias_prior_factor.h"
 #include "estimator/estimator_input.h"
 #include "estimator/estimator_options.h"
 #include "estimator/feature_manager.h"
@@ -100,6 +101,10 @@ class Estimator {
   std::deque<std::unique_ptr<Frame>> window_;
   FeatureManager features_;
   std::shared_ptr<LinearPrior> prior_;
+  // The initial bias prior (options_.prior) while the frame it constrains (the oldest at initialization) is
+  // in the window; when that frame is marginalized its information moves into prior_.
+  std::unique_ptr<BiasPriorFactor> bias_prior_;
+  uint64_t bias_prior_frame_id_ = 0;
   ceres::CauchyLoss loss_;
   PoseManifold pose_manifold_;
 

@@ -25,6 +25,8 @@ void Estimator::MarginalizeOldest(bool with_prior) {
       terms.push_back({factor.get(), nullptr, factor->parameter_blocks()});
       costs.push_back(std::move(factor));
     }
+    if (bias_prior_ && bias_prior_frame_id_ == oldest.id)
+      terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
     Frame& second = *window_[1];
     {
       auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
@@ -52,6 +54,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     else
       prior_.reset();
   }
+  if (bias_prior_ && bias_prior_frame_id_ == oldest.id) bias_prior_.reset();  // now part of prior_
   features_.RemoveFrame(oldest.id, CameraPoses());
   window_.pop_front();
   window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor

@@ -66,6 +66,9 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
     problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
     costs.push_back(std::move(factor));
   }
+  // A bias-only prior: it does not fix the gauge, so it is independent of the branch above.
+  if (bias_prior_ && bias_prior_frame_id_ == window_.front()->id)
+    problem.AddResidualBlock(bias_prior_.get(), nullptr, window_.front()->speed_bias);
   for (std::size_t i = 1; i < window_.size(); ++i) {
     auto factor = std::make_unique<ImuFactor>(*window_[i]->imu_from_prev, g_W_);
     problem.AddResidualBlock(factor.get(), nullptr, window_[i - 1]->pose, window_[i - 1]->speed_bias,

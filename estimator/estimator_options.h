@@ -1,6 +1,7 @@
 // Options of the sliding-window visual-inertial estimator.
 //
-// Defaults are the reference values of VINS-Mono (../shared/spec/references.md, estimator section).
+// Defaults are the reference values of VINS-Mono (../shared/spec/references.md, estimator section), except
+// PriorOptions (VINS-Mono has no initial bias prior; see there).
 #pragma once
 
 #include "core/config.h"
@@ -55,6 +56,36 @@ struct WindowOptions {
             "re-integrate an IMU factor when its b_g estimate moved this far from the linearization point "
             "[rad/s]",
             Bounds::Positive());
+  }
+};
+
+// Prior knowledge of the IMU biases at initialization (not part of VINS-Mono, which starts its biases free;
+// OKVIS- and OpenVINS-style estimators carry an initial bias uncertainty like this one). The initializer's
+// bias estimate (groundtruth: the true biases; vins: the gyroscope bias from its least squares and a zero
+// accelerometer bias) enters as a Gaussian prior on the first window's oldest frame and is carried into the
+// marginalization prior when that frame leaves the window; it never fixes the gauge (position, yaw).
+// Why: over the first windows (about a second, little rotation) a roll/pitch error d_theta and an
+// accelerometer bias g * d_theta explain the IMU data equally well, so with free biases the noise tilts the
+// early windows by a few tenths of a degree, the tilted window drifts in z, and the marginalization prior
+// freezes that in. The prior keeps the bias near what is known before any motion. The defaults describe a
+// low-cost MEMS IMU calibrated once but not at start-up (turn-on biases of ~0.1 m/s^2 and ~0.03 rad/s = 1.7
+// deg/s; the bias priors OKVIS ships with); 0 switches a prior off. A true bias several std away from the
+// prior's centre is still found, only more slowly.
+struct PriorOptions {
+  double accel_bias_std = 0.1;  // [m/s^2]
+  double gyro_bias_std = 0.03;  // [rad/s]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("accel_bias_std", accel_bias_std,
+            "std of the Gaussian prior on the initial accelerometer bias (around the initializer's estimate) "
+            "[m/s^2]; 0: no prior",
+            Bounds::NonNegative());
+    v.Field("gyro_bias_std", gyro_bias_std,
+            "std of the Gaussian prior on the initial gyroscope bias (around the initializer's estimate) "
+            "[rad/s]; 0: no prior",
+            Bounds::NonNegative());
   }
 };
 
@@ -162,6 +193,7 @@ struct EstimatorOptions {
   GroundTruthInitOptions groundtruth_init;
   VinsInitOptions vins;
   WindowOptions window;
+  PriorOptions prior;
   FeatureOptions features;
   SolverOptions solver;
   FailureOptions failure;
@@ -175,6 +207,7 @@ struct EstimatorOptions {
     v.Section("groundtruth_init", groundtruth_init, "perturbation of the ground-truth initialization");
     v.Section("vins", vins, "visual-inertial initialization (init: vins)");
     v.Section("window", window, "sliding window and keyframe decision");
+    v.Section("prior", prior, "initial IMU bias prior (from the initializer's estimate)");
     v.Section("features", features, "feature tracks: triangulation, reprojection noise, outliers");
     v.Section("solver", solver, "Ceres solve per frame");
     v.Section("failure", failure,

@@ -6,6 +6,7 @@
 
 #include "core/random.h"
 #include "core/so3.h"
+#include "estimator/bias_prior_factor.h"
 #include "estimator/imu_factor.h"
 #include "estimator/marginalization.h"
 #include "estimator/pose_manifold.h"
@@ -98,6 +99,25 @@ TEST(FactorJacobianTest, ImuFactor) {
   const std::vector<double> sb_i = {0.5, 0.2, -0.1, 0.07, -0.02, 0.03, 0.004, 0.012, -0.003};
   const std::vector<double> sb_j = {0.6, 0.1, -0.2, 0.06, -0.01, 0.02, 0.005, 0.011, -0.002};
   WorstJacobianError(factor, {pose_i, sb_i, pose_j, sb_j});
+}
+
+TEST(FactorJacobianTest, BiasPriorFactor) {
+  const BiasPriorFactor factor(Eigen::Vector3d(0.02, -0.05, 0.1), Eigen::Vector3d(0.001, 0.002, -0.003), 0.1,
+                               0.01);
+  const std::vector<double> sb = {0.5, 0.2, -0.1, 0.07, -0.02, 0.03, 0.004, 0.012, -0.003};
+  WorstJacobianError(factor, {sb});
+  // The residual: the bias offsets over their std, the velocity untouched.
+  Eigen::Matrix<double, 6, 1> r;
+  const double* p[1] = {sb.data()};
+  ASSERT_TRUE(factor.Evaluate(p, r.data(), nullptr));
+  EXPECT_NEAR(r[0], (0.07 - 0.02) / 0.1, 1e-12);
+  EXPECT_NEAR(r[2], (0.03 - 0.1) / 0.1, 1e-12);
+  EXPECT_NEAR(r[4], (0.012 - 0.002) / 0.01, 1e-12);
+  // A std of 0 switches that half off.
+  const BiasPriorFactor gyro_only(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0, 0.01);
+  ASSERT_TRUE(gyro_only.Evaluate(p, r.data(), nullptr));
+  EXPECT_EQ(r.head<3>().norm(), 0.0);
+  EXPECT_GT(r.tail<3>().norm(), 0.0);
 }
 
 TEST(FactorJacobianTest, ReprojectionFactor) {
