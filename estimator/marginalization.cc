@@ -106,7 +106,9 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
       c += tangent;
     }
     Robustify(t.loss, &r, &J);
-    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    // Small terms (a reprojection: 2 x 13) skip the blocked matrix-product kernel and its set-up.
+    const Eigen::MatrixXd JtJ = rows * total <= 64 ? Eigen::MatrixXd(J.transpose().lazyProduct(J))
+                                                   : Eigen::MatrixXd(J.transpose() * J);
     const Eigen::VectorXd Jtr = J.transpose() * r;
     for (std::size_t k = 0, ck = 0; k < t.blocks.size(); ++k) {
       const int tk = TangentSize(sizes[k]);
