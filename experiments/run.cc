@@ -108,7 +108,10 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
                       detectors::DetectionsCsv(data.dataset.imu, detection.result.flagged));
   }
   summary.wall.total_s = SecondsSince(start);
-  const nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
+  nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
+  // A run from a recorded dataset names it, so that its figures show the recorded IMU (vigil plot run).
+  if (!options.dataset_dir.empty())
+    metrics["dataset"] = std::filesystem::absolute(options.dataset_dir).lexically_normal().string();
   WriteFileAtomic(dir / "metrics.json", metrics.dump(2) + "\n");
   return metrics;
 }

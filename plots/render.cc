@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -45,17 +46,17 @@ class FigureWriter {
   std::vector<fs::path> written_;
 };
 
-Dataset Resimulate(const RunData& run) { return sim::Simulate(run.config.sim, run.config.seed); }
-
-// Re-simulations of a sweep's runs, keyed by (simulator options, seed): runs of different methods share their
-// recording, so each recording is simulated once per rendering.
+// The recordings of a sweep's runs (RecordingOf), keyed by dataset directory or by (simulator options, seed):
+// runs of different methods share their recording, so each one is simulated or read once per rendering.
 class SimulationCache {
  public:
   const Dataset& Of(const RunData& run) {
     sim::SimOptions sim = run.config.sim;  // ToYaml visits mutably
-    const auto key = std::make_pair(config::ToYaml(sim), run.config.seed);
+    const std::optional<fs::path> dataset = RecordedDatasetOf(run);
+    const auto key = dataset ? std::make_pair("dataset " + dataset->string(), uint64_t{0})
+                             : std::make_pair(config::ToYaml(sim), run.config.seed);
     auto it = cache_.find(key);
-    if (it == cache_.end()) it = cache_.emplace(key, Resimulate(run)).first;
+    if (it == cache_.end()) it = cache_.emplace(key, RecordingOf(run)).first;
     return it->second;
   }
 
@@ -94,7 +95,7 @@ std::vector<fs::path> RenderRunFigures(const fs::path& run_dir, const fs::path& 
                                        const FigureOptions& options) {
   ValidateFigureOptions(options);
   const RunData run = LoadRunDirectory(run_dir);
-  const Dataset data = Resimulate(run);
+  const Dataset data = RecordingOf(run);
   FigureWriter writer(out_dir, options);
   writer.Write("fig1_scenario.png", ScenarioFigure(ScenarioDataOf(data, "Scenario of " + RunTitle(run))));
   writer.Write("fig2_glitches.png",

@@ -7,6 +7,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/output.h"
+#include "sim/simulator.h"
 
 namespace vigil::plots {
 namespace {
@@ -146,6 +147,25 @@ SweepData LoadSweepDirectory(const std::filesystem::path& dir) {
   std::sort(sweep.settings.begin(), sweep.settings.end());
   std::sort(sweep.methods.begin(), sweep.methods.end(), MethodBefore);
   return sweep;
+}
+
+namespace fs = std::filesystem;
+
+std::optional<fs::path> RecordedDatasetOf(const RunData& run) {
+  if (!run.metrics.is_object() || !run.metrics.contains("dataset")) return std::nullopt;
+  const nlohmann::json& dataset = run.metrics["dataset"];
+  if (!dataset.is_string() || dataset.get<std::string>().empty())
+    throw InputError((run.dir / "metrics.json").string() + ": dataset: expected a directory path");
+  return fs::path(dataset.get<std::string>());
+}
+
+Dataset RecordingOf(const RunData& run) {
+  const std::optional<fs::path> dataset = RecordedDatasetOf(run);
+  if (!dataset) return sim::Simulate(run.config.sim, run.config.seed);
+  if (!fs::is_directory(*dataset))
+    throw InputError((run.dir / "metrics.json").string() + ": dataset: " + dataset->string() +
+                     ": the run's dataset directory is gone (its figures need the recorded IMU)");
+  return ReadDataset(*dataset);
 }
 
 }  // namespace vigil::plots

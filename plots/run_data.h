@@ -8,11 +8,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/dataset.h"
 #include "core/types.h"
 #include "experiments/run_config.h"
 
@@ -52,6 +54,13 @@ struct RunData {
 
 // Reads a run directory; config.yaml is required, the other files are optional. Bad files throw InputError.
 RunData LoadRunDirectory(const std::filesystem::path& dir);
+
+// Where the recording a run consumed comes from: the dataset directory its metrics.json names (`vigil run
+// --dataset`), else nothing -- the run simulated config.yaml's scenario and seed.
+std::optional<std::filesystem::path> RecordedDatasetOf(const RunData& run);
+// The recording a run consumed: that dataset read again (InputError when it is gone), else the simulation of
+// config.yaml re-run (deterministic, so the same data).
+Dataset RecordingOf(const RunData& run);
 
 struct SweepData {
   std::filesystem::path dir;

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/dataset.h"
 #include "core/output.h"
 #include "experiments/run_command.h"
 #include "plots/image.h"
+#include "plots/run_data.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
 #include "tests/plots/synthetic_runs.h"
@@ -133,6 +135,43 @@ TEST(RenderRun, RealRunDirectory) {
   if (const char* keep = std::getenv("VIGIL_PLOTS_TEST_OUTPUT")) {
     RenderRunFigures(tmp.path() / "run", fs::path(keep) / "run", FigureOptions());
   }
+}
+
+// A run made from a recorded dataset is plotted from that recording, not from a re-simulation of its
+// config.yaml (here the recording was simulated with another seed, so the two differ).
+TEST(RenderRun, DatasetRunIsPlottedFromItsRecording) {
+  vigil::testing::TempDir tmp;
+  const std::string paper = std::string(VIGIL_SOURCE_DIR) + "/configs/paper.yaml";
+  const std::vector<std::string> overrides = {"duration_s=3", "glitch.enabled=true", "glitch.mean=3",
+                                              "glitch.std=1", "detector.type=threshold"};
+  experiments::RunConfig config = experiments::LoadRunConfig(paper, overrides);
+  sim::SimulateToDirectory(config.sim, 9, config::ToYaml(config), tmp.path() / "ds", false);
+  experiments::RunOptions options;
+  options.dataset_dir = tmp.path() / "ds";
+  const nlohmann::json metrics =
+      experiments::RunToDirectory(paper, overrides, options, tmp.path() / "run", false);
+  EXPECT_EQ(metrics["dataset"], fs::absolute(tmp.path() / "ds").lexically_normal().string());
+
+  const RunData run = LoadRunDirectory(tmp.path() / "run");
+  const Dataset recording = RecordingOf(run);
+  const Dataset recorded = ReadDataset(tmp.path() / "ds");
+  const Dataset resimulated = sim::Simulate(config.sim, config.seed);
+  ASSERT_EQ(recording.imu.size(), recorded.imu.size());
+  ASSERT_EQ(recording.imu.size(), resimulated.imu.size());
+  int differs = 0;
+  for (std::size_t i = 0; i < recording.imu.size(); ++i) {
+    EXPECT_EQ(recording.imu[i].a_B, recorded.imu[i].a_B) << i;
+    differs += recording.imu[i].a_B != resimulated.imu[i].a_B;
+  }
+  EXPECT_GT(differs, 0);
+  EXPECT_EQ(RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small()).size(), 5u);
+
+  // Without its recording the run cannot be plotted faithfully: a clear error, no figure.
+  fs::remove_all(tmp.path() / "ds");
+  const std::string error =
+      vigil::testing::InputErrorOf([&] { RenderRunFigures(tmp.path() / "run", tmp.path() / "f", Small()); });
+  EXPECT_NE(error.find("metrics.json: dataset: "), std::string::npos) << error;
+  EXPECT_FALSE(fs::exists(tmp.path() / "f" / "fig1_scenario.png"));
 }
 
 TEST(RenderRun, BadMetricsNamesTheFile) {
