@@ -12,6 +12,7 @@
 #include "core/output.h"
 #include "detectors/detection_metrics.h"
 #include "detectors/detector.h"
+#include "detectors/dtw_detector.h"
 #include "detectors/template_library.h"
 
 namespace vigil::app {
@@ -97,7 +98,7 @@ void AddCleanCommand(CLI::App& root) {
     json["input"] = input.imu.string();
     if (library) {
       json["templates"] = options.dtw.templates_file;
-      json["dtw_threshold"] = options.dtw.threshold > 0 ? options.dtw.threshold : library->threshold;
+      json["dtw_threshold"] = detectors::EffectiveDtwThreshold(options.dtw, *library);
     }
     json.update(detectors::DetectionJson(metrics, has_glitches, has_clean));
 

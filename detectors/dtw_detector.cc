@@ -20,9 +20,13 @@ const TemplateLibrary& Checked(const TemplateLibrary& library) {
 
 }  // namespace
 
+double EffectiveDtwThreshold(const DtwOptions& options, const TemplateLibrary& library) {
+  return options.threshold > 0.0 ? options.threshold : library.threshold;
+}
+
 DtwDetector::DtwDetector(const DtwOptions& options, const TemplateLibrary& library)
     : library_(Checked(library)),
-      threshold_(options.threshold > 0.0 ? options.threshold : library.threshold),
+      threshold_(EffectiveDtwThreshold(options, library)),
       matcher_(library.values.data(), library.count(), library.template_length, library.dims) {
   const std::size_t m = library.slice_length, d = library.dims;
   pending_.reserve(m);

@@ -29,6 +29,10 @@
 
 namespace vigil::detectors {
 
+// The distance threshold a DtwDetector uses: options.threshold when set (> 0), else the library's calibrated
+// one.
+double EffectiveDtwThreshold(const DtwOptions& options, const TemplateLibrary& library);
+
 class DtwDetector final : public Detector {
  public:
   // Uses the library's geometry (k, N, M, d, normalization) and its threshold unless options.threshold > 0.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/random.h"
+#include "detectors/dtw_detector.h"
 #include "sim/simulator.h"
 
 namespace vigil::experiments {
@@ -50,8 +51,7 @@ DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
   for (const auto& [name, type] : detectors::DetectorTypeNames())
     if (type == config.detector.type) stage.json["detector"] = name;
   if (templates) {
-    stage.json["dtw_threshold"] =
-        config.detector.dtw.threshold > 0 ? config.detector.dtw.threshold : templates->threshold;
+    stage.json["dtw_threshold"] = detectors::EffectiveDtwThreshold(config.detector.dtw, *templates);
     stage.json["templates_source"] = templates->source;
   }
   return stage;
