@@ -4,8 +4,7 @@
 
 namespace vigil::estimator {
 
-ImuFactor::ImuFactor(const Preintegration& pre, const Eigen::Vector3d& g_W)
-    : pre_(pre), g_W_(g_W), sqrt_information_(pre.sqrt_information()) {}
+ImuFactor::ImuFactor(const Preintegration& pre, const Eigen::Vector3d& g_W) : pre_(pre), g_W_(g_W) {}
 
 bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
   using Eigen::Matrix3d;
@@ -18,6 +17,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   const Eigen::Map<const Vector3d> v_j(parameters[3]), ba_j(parameters[3] + 3), bg_j(parameters[3] + 6);
 
   const double T = pre_.sum_dt_s();
+  const Matrix15d& sqrt_information = pre_.sqrt_information();
   const Matrix3d Ri_T = q_i.toRotationMatrix().transpose();
   const Vector3d dp_W = p_j - p_i - v_i * T - 0.5 * g_W_ * T * T;
   const Vector3d dv_W = v_j - v_i - g_W_ * T;
@@ -31,7 +31,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   r.segment<3>(kDv) = Ri_T * dv_W - pre_.CorrectedDeltaV(ba_i, bg_i);
   r.segment<3>(kBa) = ba_j - ba_i;
   r.segment<3>(kBg) = bg_j - bg_i;
-  r = sqrt_information_ * r;
+  r = sqrt_information * r;
   if (jacobians == nullptr) return true;
 
   const Matrix15d& J = pre_.jacobian();
@@ -46,7 +46,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     jac.block<3, 3>(kDp, 3) = Skew(Ri_T * dp_W);
     jac.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
     jac.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
-    jac = sqrt_information_ * jac;
+    jac = sqrt_information * jac;
   }
   if (jacobians[1] != nullptr) {
     Eigen::Map<RowMajor15x9> jac(jacobians[1]);
@@ -60,14 +60,14 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     jac.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
     jac.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
     jac.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
-    jac = sqrt_information_ * jac;
+    jac = sqrt_information * jac;
   }
   if (jacobians[2] != nullptr) {
     Eigen::Map<RowMajor15x7> jac(jacobians[2]);
     jac.setZero();
     jac.block<3, 3>(kDp, 0) = Ri_T;
     jac.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
-    jac = sqrt_information_ * jac;
+    jac = sqrt_information * jac;
   }
   if (jacobians[3] != nullptr) {
     Eigen::Map<RowMajor15x9> jac(jacobians[3]);
@@ -75,7 +75,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     jac.block<3, 3>(kDv, 0) = Ri_T;
     jac.block<3, 3>(kBa, 3) = Matrix3d::Identity();
     jac.block<3, 3>(kBg, 6) = Matrix3d::Identity();
-    jac = sqrt_information_ * jac;
+    jac = sqrt_information * jac;
   }
   return true;
 }

@@ -26,7 +26,6 @@ class ImuFactor : public ceres::SizedCostFunction<15, kPoseSize, kSpeedBiasSize,
  private:
   const Preintegration& pre_;
   Eigen::Vector3d g_W_;
-  const Matrix15d& sqrt_information_;  // pre_.sqrt_information()
 };
 
 }  // namespace vigil::estimator
