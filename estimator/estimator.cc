@@ -73,6 +73,19 @@ Eigen::Isometry3d Estimator::T_WC(uint64_t frame_id) const {
   return T_WB * T_BC_;
 }
 
+std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(FeatureTrack& track) const {
+  const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
+  const auto& [anchor_id, n_anchor] = track.observations.front();
+  double* anchor_pose = const_cast<double*>(FrameById(anchor_id).pose);
+  std::vector<ReprojectionTerm> terms;
+  for (std::size_t k = 1; k < track.observations.size(); ++k) {
+    const auto& [frame_id, n] = track.observations[k];
+    terms.push_back({std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information),
+                     {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth}});
+  }
+  return terms;
+}
+
 CameraPoseLookup Estimator::CameraPoses() const {
   return [this](uint64_t id) { return T_WC(id); };
 }
@@ -173,7 +186,6 @@ bool Estimator::TryInitialize() {
   if (prior.accel_bias_std > 0.0 || prior.gyro_bias_std > 0.0) {
     bias_prior_ = std::make_unique<BiasPriorFactor>(result.states.front().b_a, result.states.front().b_g,
                                                     prior.accel_bias_std, prior.gyro_bias_std);
-    bias_prior_frame_id_ = window_.front()->id;
   }
   initialized_ = true;
   if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;

@@ -11,6 +11,7 @@
 // estimator_optimize.cc (the Ceres problem), estimator_marginalize.cc (sliding the window).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <map>
@@ -32,6 +33,7 @@
 #include "estimator/marginalization.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/preintegration.h"
+#include "estimator/reprojection_factor.h"
 
 namespace vigil::estimator {
 
@@ -85,6 +87,13 @@ class Estimator {
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
   void Reset();
+  // One reprojection factor per observation of a usable track after its anchor, with its parameter blocks
+  // (anchor pose, observing pose, inverse depth).
+  struct ReprojectionTerm {
+    std::unique_ptr<ReprojectionFactor> factor;
+    std::array<double*, 3> blocks;
+  };
+  std::vector<ReprojectionTerm> ReprojectionTermsOf(FeatureTrack& track) const;
   Eigen::Isometry3d T_WC(uint64_t frame_id) const;
   CameraPoseLookup CameraPoses() const;
   const Frame& FrameById(uint64_t id) const;
@@ -101,10 +110,10 @@ class Estimator {
   std::deque<std::unique_ptr<Frame>> window_;
   FeatureManager features_;
   std::shared_ptr<LinearPrior> prior_;
-  // The initial bias prior (options_.prior) while the frame it constrains (the oldest at initialization) is
-  // in the window; when that frame is marginalized its information moves into prior_.
+  // The initial bias prior (options_.prior) on the oldest frame's speed-bias block, from initialization until
+  // that frame is marginalized (its information then moves into prior_). Only MarginalizeOldest and Reset
+  // remove the oldest frame, and both drop this prior, so while it exists it belongs to window_.front().
   std::unique_ptr<BiasPriorFactor> bias_prior_;
-  uint64_t bias_prior_frame_id_ = 0;
   ceres::CauchyLoss loss_;
   PoseManifold pose_manifold_;
 

@@ -5,7 +5,6 @@
 
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
-#include "estimator/reprojection_factor.h"
 
 namespace vigil::estimator {
 namespace {
@@ -25,8 +24,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
       terms.push_back({factor.get(), nullptr, factor->parameter_blocks()});
       costs.push_back(std::move(factor));
     }
-    if (bias_prior_ && bias_prior_frame_id_ == oldest.id)
-      terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
+    if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
     Frame& second = *window_[1];
     {
       auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
@@ -34,18 +32,12 @@ void Estimator::MarginalizeOldest(bool with_prior) {
           {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
       costs.push_back(std::move(factor));
     }
-    const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
       dropped.insert(&track.inv_depth);
-      const auto& anchor = track.observations.front();
-      for (std::size_t k = 1; k < track.observations.size(); ++k) {
-        const auto& [frame_id, n] = track.observations[k];
-        auto factor = std::make_unique<ReprojectionFactor>(anchor.second, n, T_BC_, sqrt_information);
-        terms.push_back({factor.get(),
-                         &loss_,
-                         {oldest.pose, const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth}});
-        costs.push_back(std::move(factor));
+      for (ReprojectionTerm& term : ReprojectionTermsOf(track)) {
+        terms.push_back({term.factor.get(), &loss_, {term.blocks.begin(), term.blocks.end()}});
+        costs.push_back(std::move(term.factor));
       }
     }
     auto prior = std::make_shared<LinearPrior>();
@@ -54,7 +46,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     else
       prior_.reset();
   }
-  if (bias_prior_ && bias_prior_frame_id_ == oldest.id) bias_prior_.reset();  // now part of prior_
+  bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   features_.RemoveFrame(oldest.id, CameraPoses());
   window_.pop_front();
   window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor

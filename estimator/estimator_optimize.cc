@@ -9,7 +9,6 @@
 #include "core/so3.h"
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
-#include "estimator/reprojection_factor.h"
 
 namespace vigil::estimator {
 namespace {
@@ -67,25 +66,18 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
     costs.push_back(std::move(factor));
   }
   // A bias-only prior: it does not fix the gauge, so it is independent of the branch above.
-  if (bias_prior_ && bias_prior_frame_id_ == window_.front()->id)
-    problem.AddResidualBlock(bias_prior_.get(), nullptr, window_.front()->speed_bias);
+  if (bias_prior_) problem.AddResidualBlock(bias_prior_.get(), nullptr, window_.front()->speed_bias);
   for (std::size_t i = 1; i < window_.size(); ++i) {
     auto factor = std::make_unique<ImuFactor>(*window_[i]->imu_from_prev, g_W_);
     problem.AddResidualBlock(factor.get(), nullptr, window_[i - 1]->pose, window_[i - 1]->speed_bias,
                              window_[i]->pose, window_[i]->speed_bias);
     costs.push_back(std::move(factor));
   }
-  const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
   for (auto& [id, track] : features_.tracks()) {
     if (!features_.Usable(track)) continue;
-    const auto& anchor = track.observations.front();
-    const Frame& anchor_frame = FrameById(anchor.first);
-    for (std::size_t k = 1; k < track.observations.size(); ++k) {
-      const auto& [frame_id, n] = track.observations[k];
-      auto factor = std::make_unique<ReprojectionFactor>(anchor.second, n, T_BC_, sqrt_information);
-      problem.AddResidualBlock(factor.get(), &loss_, const_cast<double*>(anchor_frame.pose),
-                               const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth);
-      costs.push_back(std::move(factor));
+    for (ReprojectionTerm& term : ReprojectionTermsOf(track)) {
+      problem.AddResidualBlock(term.factor.get(), &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
+      costs.push_back(std::move(term.factor));
     }
   }
 
