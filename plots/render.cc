@@ -51,16 +51,20 @@ class FigureWriter {
 class SimulationCache {
  public:
   const Dataset& Of(const RunData& run) {
-    sim::SimOptions sim = run.config.sim;  // ToYaml visits mutably
-    const std::optional<fs::path> dataset = RecordedDatasetOf(run);
-    const auto key = dataset ? std::make_pair("dataset " + dataset->string(), uint64_t{0})
-                             : std::make_pair(config::ToYaml(sim), run.config.seed);
+    const auto key = KeyOf(run);
     auto it = cache_.find(key);
     if (it == cache_.end()) it = cache_.emplace(key, RecordingOf(run)).first;
     return it->second;
   }
 
  private:
+  static std::pair<std::string, uint64_t> KeyOf(const RunData& run) {
+    if (const std::optional<fs::path> dataset = RecordedDatasetOf(run))
+      return {"dataset " + dataset->string(), 0};
+    sim::SimOptions sim = run.config.sim;  // ToYaml visits mutably
+    return {config::ToYaml(sim), run.config.seed};
+  }
+
   std::map<std::pair<std::string, uint64_t>, Dataset> cache_;
 };
 
