@@ -6,6 +6,10 @@
 
 namespace vigil::experiments {
 
+nlohmann::json NumberOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
 double MetricNumber(const nlohmann::json& metrics, std::initializer_list<std::string_view> path) {
   const nlohmann::json* node = &metrics;
   for (std::string_view key : path) {

@@ -16,6 +16,9 @@ double MetricNumber(const nlohmann::json& metrics, std::initializer_list<std::st
 // The entry of metrics["relative"] whose distance_m equals `distance_m` (within 1e-9); null when none.
 const nlohmann::json* RelativeEntry(const nlohmann::json& metrics, double distance_m);
 
+// The writing side: a finite number, or null (JSON has no NaN or infinity; MetricNumber reads null as NaN).
+nlohmann::json NumberOrNull(double v);
+
 // metrics["status"] or "" (and "failure_reason").
 std::string MetricText(const nlohmann::json& metrics, std::string_view key);
 

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "experiments/metrics_access.h"
 #include "experiments/statistics.h"
 
 namespace vigil::experiments {
@@ -52,7 +53,7 @@ nlohmann::json BaselineJson(const std::vector<RegressionCell>& cells, const Regr
   j["cells"] = nlohmann::json::array();
   for (const auto& c : cells) {
     nlohmann::json cell = {{"metric", c.metric}, {"cell", c.cell}, {"failed", c.failed}};
-    cell["value"] = std::isfinite(c.value) ? nlohmann::json(c.value) : nlohmann::json(nullptr);
+    cell["value"] = NumberOrNull(c.value);
     j["cells"].push_back(cell);
   }
   return j;

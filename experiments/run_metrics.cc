@@ -3,17 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "experiments/metrics_access.h"
+
 namespace vigil::experiments {
 namespace {
 
-nlohmann::json NumberOrNull(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * seconds / frames : 0.0; }
-
-// A number of a JSON value that may be null (NaN then).
-double Number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
 }  // namespace
 
@@ -55,18 +50,18 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   char buf[256];
   const nlohmann::json& ate = m.at("ate");
   std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
-                Number(ate.at("trans_m").at("rmse")), ate.at("align").get<std::string>().c_str(),
-                100.0 * Number(m.at("coverage")));
+                MetricNumber(ate, {"trans_m", "rmse"}), ate.at("align").get<std::string>().c_str(),
+                100.0 * MetricNumber(m, {"coverage"}));
   s += buf;
   if (!m.at("relative").empty()) {
     const nlohmann::json& r = m.at("relative").front();
-    std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", Number(r.at("distance_m")),
-                  Number(r.at("trans_m").at("mean")), Number(r.at("yaw_deg").at("mean")));
+    std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", MetricNumber(r, {"distance_m"}),
+                  MetricNumber(r, {"trans_m", "mean"}), MetricNumber(r, {"yaw_deg", "mean"}));
     s += buf;
   }
   std::snprintf(buf, sizeof(buf), ", detector %s, wall %.2f s",
                 m.at("detection").value("detector", std::string("none")).c_str(),
-                Number(m.at("wall_time_s").at("total")));
+                MetricNumber(m, {"wall_time_s", "total"}));
   return s + buf;
 }
 

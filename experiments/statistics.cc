@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "experiments/metrics_access.h"
+
 namespace vigil::experiments {
 
 ErrorStatistics ComputeStatistics(std::vector<double> values) {
@@ -26,13 +28,12 @@ ErrorStatistics ComputeStatistics(std::vector<double> values) {
 }
 
 nlohmann::json StatisticsJson(const ErrorStatistics& stats) {
-  const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  return {{"rmse", number(stats.rmse)},
-          {"mean", number(stats.mean)},
-          {"median", number(stats.median)},
-          {"std", number(stats.std)},
-          {"min", number(stats.min)},
-          {"max", number(stats.max)},
+  return {{"rmse", NumberOrNull(stats.rmse)},
+          {"mean", NumberOrNull(stats.mean)},
+          {"median", NumberOrNull(stats.median)},
+          {"std", NumberOrNull(stats.std)},
+          {"min", NumberOrNull(stats.min)},
+          {"max", NumberOrNull(stats.max)},
           {"n", stats.n}};
 }
 
