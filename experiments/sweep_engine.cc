@@ -23,14 +23,15 @@ constexpr const char* kMetricsFile = "metrics.json";
 // What travels from the parallel stage to the in-order output stage.
 struct Finished {
   std::size_t index = 0;
-  std::string metrics_text;  // exactly the committed metrics.json
+  nlohmann::json
+      metrics;  // the committed metrics.json, parsed once (discarded when a resumed file is not JSON)
 };
 
-std::string FailureMetrics(const std::string& reason) {
+nlohmann::json FailureMetrics(const std::string& reason) {
   nlohmann::json j;
   j["status"] = "failed";
   j["failure_reason"] = reason;
-  return j.dump(2) + "\n";
+  return j;
 }
 
 // Leftovers of a killed sweep: staging directories and temporary files ("<name>.tmp-<pid>").
@@ -83,33 +84,31 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
     const fs::path final_metrics = RunMetricsPath(sweep_dir, run_ids[index]);
     std::error_code ec;
     if (options.resume && fs::is_regular_file(final_metrics, ec)) {
-      done->metrics_text = ReadFile(final_metrics);
+      done->metrics = nlohmann::json::parse(ReadFile(final_metrics), nullptr, false);
       ++resumed;
-      progress.Finished(true, IsFailed(nlohmann::json::parse(done->metrics_text, nullptr, false)));
+      progress.Finished(true, IsFailed(done->metrics));
       return done;
     }
     StagedDirectory staging(RunDirectory(sweep_dir, run_ids[index]), /*force=*/true);
     try {
-      const nlohmann::json metrics = run(index, staging.path());
-      done->metrics_text = metrics.dump(2) + "\n";
+      done->metrics = run(index, staging.path());
     } catch (const std::exception& e) {
-      done->metrics_text = FailureMetrics(e.what());
+      done->metrics = FailureMetrics(e.what());
     } catch (...) {
-      done->metrics_text = FailureMetrics("unknown exception");
+      done->metrics = FailureMetrics("unknown exception");
     }
-    WriteFileAtomic(staging.path() / kMetricsFile, done->metrics_text);
+    WriteFileAtomic(staging.path() / kMetricsFile, done->metrics.dump(2) + "\n");
     staging.Commit();
     ++executed;
-    progress.Finished(false, IsFailed(nlohmann::json::parse(done->metrics_text, nullptr, false)));
+    progress.Finished(false, IsFailed(done->metrics));
     return done;
   };
   std::size_t failed = 0;
   auto sink = [&](std::shared_ptr<Finished> done) {
-    const nlohmann::json metrics = nlohmann::json::parse(done->metrics_text, nullptr, false);
-    if (metrics.is_discarded())
+    if (done->metrics.is_discarded())
       throw std::runtime_error(RunMetricsPath(sweep_dir, run_ids[done->index]).string() + ": not valid JSON");
-    if (IsFailed(metrics)) ++failed;
-    if (on_result) on_result(done->index, metrics);
+    if (IsFailed(done->metrics)) ++failed;
+    if (on_result) on_result(done->index, done->metrics);
   };
 
   tbb::task_arena arena(threads);
