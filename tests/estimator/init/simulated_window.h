@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/dataset.h"
+#include "estimator/imu_interval.h"
 #include "estimator/initializer.h"
 #include "sim/simulator.h"
 
@@ -40,23 +41,15 @@ inline std::vector<InitFrame> MakeWindow(const Dataset& data, std::size_t first,
                                          const ImuNoiseDensities& noise) {
   std::vector<InitFrame> window;
   const double rate_hz = 1e9 / static_cast<double>(data.imu[1].t_ns - data.imu[0].t_ns);
-  std::size_t imu = 0;
   for (std::size_t k = first; k < first + count; ++k) {
     const CameraFrame& frame = data.frames.at(k);
     InitFrame f;
     f.t_ns = frame.t_ns;
     for (const auto& obs : frame.features) f.features_n[obs.id] = data.camera.Normalize(obs.uv_px);
-    while (data.imu.at(imu).t_ns < frame.t_ns) ++imu;
-    if (data.imu[imu].t_ns != frame.t_ns) throw std::logic_error("frame time between IMU samples");
-    if (!window.empty()) {
-      std::size_t i = imu;
-      while (data.imu[i].t_ns > window.back().t_ns) --i;
-      Preintegration pre(data.imu[i].a_B, data.imu[i].w_B, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                         noise, rate_hz);
-      for (std::size_t j = i + 1; j <= imu; ++j)
-        pre.Push(NsToS(data.imu[j].t_ns - data.imu[j - 1].t_ns), data.imu[j].a_B, data.imu[j].w_B);
-      f.imu_from_prev = pre;
-    }
+    if (!window.empty())
+      f.imu_from_prev =
+          PreintegrateInterval(data.imu, window.back().t_ns, frame.t_ns, Eigen::Vector3d::Zero(),
+                               Eigen::Vector3d::Zero(), noise, rate_hz);
     window.push_back(std::move(f));
   }
   return window;
