@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/detector_args.h"
+#include "core/config.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/output.h"
@@ -43,23 +44,22 @@ void AddCleanCommand(CLI::App& root) {
     bool force = false;
   };
   auto args = std::make_shared<Args>();
-  std::string names;
-  for (const auto& [name, type] : detectors::DetectorTypeNames()) names += (names.empty() ? "" : ", ") + name;
   cmd->add_option("DATASET", args->dataset, "dataset directory or EuRoC imu0 CSV file")->required();
   cmd->add_option("-o,--output", args->output,
                   "output directory (must not exist or be empty, unless --force)")
       ->required();
-  cmd->add_option("--detector", args->detector, "detector: " + names)->required();
+  cmd->add_option("--detector", args->detector,
+                  "detector: " + config::EnumChoices(detectors::DetectorTypeNames()))
+      ->required();
   cmd->add_option("--templates", args->templates,
                   "DTW template library (from `vigil templates`); required for dtw");
   args->overrides.AddTo(cmd);
   cmd->add_flag("--force", args->force, "replace a non-empty output directory");
   SetAction(cmd, [args] {
     detectors::DetectorOptions options = args->overrides.Resolve();
-    bool known = false;
-    for (const auto& [name, type] : detectors::DetectorTypeNames())
-      if (name == args->detector) options.type = type, known = true;
-    if (!known) throw InputError("--detector: unknown detector '" + args->detector + "'");
+    const auto type = config::EnumFromName(args->detector, detectors::DetectorTypeNames());
+    if (!type) throw InputError("--detector: unknown detector '" + args->detector + "'");
+    options.type = *type;
     if (!args->templates.empty()) options.dtw.templates_file = args->templates;
 
     // Read everything before writing anything.

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "core/config.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -21,11 +22,10 @@ void AddEvalCommand(CLI::App& root) {
     bool json = false;
   };
   auto args = std::make_shared<Args>();
-  std::string names;
-  for (const auto& [name, a] : experiments::AlignmentNames()) names += (names.empty() ? "" : ", ") + name;
   cmd->add_option("GT", args->gt, "ground-truth trajectory (e.g. stamped_groundtruth.txt)")->required();
   cmd->add_option("EST", args->est, "estimated trajectory (e.g. stamped_traj_estimate.txt)")->required();
-  cmd->add_option("--align", args->align, "alignment: " + names + " (default posyaw)");
+  cmd->add_option("--align", args->align,
+                  "alignment: " + config::EnumChoices(experiments::AlignmentNames()) + " (default posyaw)");
   cmd->add_option(
          "--distances", args->distances,
          "sub-trajectory lengths of the relative errors [m], comma separated (default 7,14,21,28,35)")
@@ -33,10 +33,9 @@ void AddEvalCommand(CLI::App& root) {
   cmd->add_flag("--json", args->json, "print JSON (the ate/relative/coverage part of metrics.json)");
   SetAction(cmd, [args] {
     experiments::EvaluationOptions options;
-    bool known = false;
-    for (const auto& [name, a] : experiments::AlignmentNames())
-      if (name == args->align) options.align = a, known = true;
-    if (!known) throw InputError("--align: unknown alignment '" + args->align + "'");
+    const auto align = config::EnumFromName(args->align, experiments::AlignmentNames());
+    if (!align) throw InputError("--align: unknown alignment '" + args->align + "'");
+    options.align = *align;
     if (!args->distances.empty()) {
       for (double d : args->distances)
         if (!(d > 0.0)) throw InputError("--distances: every length must be > 0, got " + FormatDouble(d));

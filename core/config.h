@@ -53,6 +53,28 @@ struct Bounds {
 template <class E>
 using EnumNames = std::vector<std::pair<std::string, E>>;
 
+// The name of `e` ("?" when it has none).
+template <class E>
+std::string EnumNameOf(E e, const EnumNames<E>& names) {
+  for (const auto& [name, v] : names)
+    if (v == e) return name;
+  return "?";
+}
+// The value named `name`, if any.
+template <class E>
+std::optional<E> EnumFromName(const std::string& name, const EnumNames<E>& names) {
+  for (const auto& [n, v] : names)
+    if (n == name) return v;
+  return std::nullopt;
+}
+// "a, b, c": the names, for help texts and errors.
+template <class E>
+std::string EnumChoices(const EnumNames<E>& names) {
+  std::string s;
+  for (const auto& nv : names) s += (s.empty() ? "" : ", ") + nv.first;
+  return s;
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Loading.
 
@@ -147,13 +169,9 @@ class Reader {
   std::string Path(const std::string& key) const { return prefix_ + key; }
   template <class E>
   E DecodeEnum(const YAML::Node& n, const char* key, const EnumNames<E>& names) const {
-    if (n.IsScalar()) {
-      for (const auto& [name, e] : names)
-        if (n.Scalar() == name) return e;
-    }
-    std::string allowed;
-    for (const auto& nv : names) allowed += (allowed.empty() ? "" : ", ") + nv.first;
-    Fail(n, key, "must be one of: " + allowed);
+    if (n.IsScalar())
+      if (const std::optional<E> e = EnumFromName(n.Scalar(), names)) return *e;
+    Fail(n, key, "must be one of: " + EnumChoices(names));
   }
 
   YAML::Node node_;
@@ -163,7 +181,8 @@ class Reader {
   std::set<std::string> known_;
 };
 
-// Parses a YAML file into a node; InputError "file:line: reason" on a syntax error, "file: ..." if unreadable.
+// Parses a YAML file into a node; InputError "file:line: reason" on a syntax error, "file: ..." if
+// unreadable.
 YAML::Node LoadYamlFile(const std::string& path);
 
 // Loads `path` into `options` (defaults for absent keys); rejects unknown keys.
@@ -221,12 +240,12 @@ class Writer {
   }
   template <class E>
   void Enum(const char* key, E& value, const EnumNames<E>& names, const char*) {
-    out_ << YAML::Key << key << YAML::Value << NameOf(value, names);
+    out_ << YAML::Key << key << YAML::Value << EnumNameOf(value, names);
   }
   template <class E>
   void EnumList(const char* key, std::vector<E>& values, const EnumNames<E>& names, const char*) {
     out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
-    for (const E& e : values) out_ << NameOf(e, names);
+    for (const E& e : values) out_ << EnumNameOf(e, names);
     out_ << YAML::EndSeq;
   }
   template <class S>
@@ -237,12 +256,6 @@ class Writer {
   }
 
  private:
-  template <class E>
-  static std::string NameOf(E e, const EnumNames<E>& names) {
-    for (const auto& [name, v] : names)
-      if (v == e) return name;
-    return "?";
-  }
   void Emit(bool v);
   void Emit(int v);
   void Emit(int64_t v);
@@ -277,20 +290,22 @@ struct KeyDoc {
 // Lists every key with its type, default, allowed values and description.
 class Describer {
  public:
-  explicit Describer(std::vector<KeyDoc>* keys, std::string prefix = "") : keys_(keys), prefix_(std::move(prefix)) {}
+  explicit Describer(std::vector<KeyDoc>* keys, std::string prefix = "")
+      : keys_(keys), prefix_(std::move(prefix)) {}
   template <class T>
   void Field(const char* key, T& value, const char* doc, const Bounds& bounds = {}) {
     keys_->push_back({prefix_ + key, TypeName(value), Show(value), bounds.Describe(), doc});
   }
   template <class E>
   void Enum(const char* key, E& value, const EnumNames<E>& names, const char* doc) {
-    keys_->push_back({prefix_ + key, "enum", NameOf(value, names), Choices(names), doc});
+    keys_->push_back({prefix_ + key, "enum", EnumNameOf(value, names), EnumChoices(names), doc});
   }
   template <class E>
   void EnumList(const char* key, std::vector<E>& values, const EnumNames<E>& names, const char* doc) {
     std::string shown;
-    for (const E& e : values) shown += (shown.empty() ? "" : ", ") + NameOf(e, names);
-    keys_->push_back({prefix_ + key, "list of enum", "[" + shown + "]", "each of " + Choices(names), doc});
+    for (const E& e : values) shown += (shown.empty() ? "" : ", ") + EnumNameOf(e, names);
+    keys_->push_back(
+        {prefix_ + key, "list of enum", "[" + shown + "]", "each of " + EnumChoices(names), doc});
   }
   template <class S>
   void Section(const char* key, S& section, const char*) {
@@ -299,18 +314,6 @@ class Describer {
   }
 
  private:
-  template <class E>
-  static std::string NameOf(E e, const EnumNames<E>& names) {
-    for (const auto& [name, v] : names)
-      if (v == e) return name;
-    return "?";
-  }
-  template <class E>
-  static std::string Choices(const EnumNames<E>& names) {
-    std::string s;
-    for (const auto& nv : names) s += (s.empty() ? "" : ", ") + nv.first;
-    return s;
-  }
   static std::string TypeName(bool) { return "bool"; }
   static std::string TypeName(int) { return "int"; }
   static std::string TypeName(int64_t) { return "int"; }

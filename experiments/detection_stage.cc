@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/config.h"
 #include "core/random.h"
 #include "detectors/dtw_detector.h"
 #include "sim/simulator.h"
@@ -48,8 +49,7 @@ DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
                                                with_glitches ? dataset.glitches : std::vector<GlitchRecord>{},
                                                with_clean ? dataset.imu_clean : ImuStream{});
   stage.json = detectors::DetectionJson(stage.metrics, with_glitches, with_clean);
-  for (const auto& [name, type] : detectors::DetectorTypeNames())
-    if (type == config.detector.type) stage.json["detector"] = name;
+  stage.json["detector"] = config::EnumNameOf(config.detector.type, detectors::DetectorTypeNames());
   if (templates) {
     stage.json["dtw_threshold"] = detectors::EffectiveDtwThreshold(config.detector.dtw, *templates);
     stage.json["templates_source"] = templates->source;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/config.h"
 #include "core/so3.h"
 #include "experiments/relative_error.h"
 
@@ -16,11 +17,7 @@ Eigen::Isometry3d Pose(const Eigen::Quaterniond& q, const Eigen::Vector3d& p) {
   return T;
 }
 
-std::string AlignmentName(Alignment align) {
-  for (const auto& [name, a] : AlignmentNames())
-    if (a == align) return name;
-  return "?";
-}
+std::string AlignmentName(Alignment align) { return config::EnumNameOf(align, AlignmentNames()); }
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/config.h"
 #include "core/csv.h"
 #include "core/dataset.h"
 #include "core/error.h"
@@ -36,10 +37,7 @@ std::string MethodName(detectors::DetectorType type) {
     case detectors::DetectorType::kNone:
       return "original";
     default:
-      for (const auto& [name, value] : detectors::DetectorTypeNames()) {
-        if (value == type) return name;
-      }
-      return "unknown";
+      return config::EnumNameOf(type, detectors::DetectorTypeNames());
   }
 }
 
