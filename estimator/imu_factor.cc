@@ -37,45 +37,48 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   const Matrix15d& J = pre_.jacobian();
   const Vector3d dbg = bg_i - pre_.linearized_b_g();
   const Matrix3d dq_dbg = RightJacobian(J.block<3, 3>(kDtheta, kBg) * dbg) * J.block<3, 3>(kDtheta, kBg);
+  // Each block is built unwhitened over the residual rows it reaches and whitened by the matching columns of
+  // the upper-triangular S: rows below the block's first nonzero row stay zero, so fixed-size products over
+  // those rows and columns only replace full 15x15 products.
   using RowMajor15x7 = Eigen::Matrix<double, 15, 7, Eigen::RowMajor>;
   using RowMajor15x9 = Eigen::Matrix<double, 15, 9, Eigen::RowMajor>;
-  if (jacobians[0] != nullptr) {
+  if (jacobians[0] != nullptr) {  // rows dp, dtheta, dv
+    Eigen::Matrix<double, 9, 6> d = Eigen::Matrix<double, 9, 6>::Zero();
+    d.block<3, 3>(kDp, 0) = -Ri_T;
+    d.block<3, 3>(kDp, 3) = Skew(Ri_T * dp_W);
+    d.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
+    d.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
     Eigen::Map<RowMajor15x7> jac(jacobians[0]);
-    jac.setZero();
-    jac.block<3, 3>(kDp, 0) = -Ri_T;
-    jac.block<3, 3>(kDp, 3) = Skew(Ri_T * dp_W);
-    jac.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
-    jac.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
-    jac = sqrt_information * jac;
+    jac.leftCols<6>().noalias() = sqrt_information.leftCols<9>() * d;
+    jac.col(6).setZero();
   }
-  if (jacobians[1] != nullptr) {
-    Eigen::Map<RowMajor15x9> jac(jacobians[1]);
-    jac.setZero();
-    jac.block<3, 3>(kDp, 0) = -Ri_T * T;
-    jac.block<3, 3>(kDp, 3) = -J.block<3, 3>(kDp, kBa);
-    jac.block<3, 3>(kDp, 6) = -J.block<3, 3>(kDp, kBg);
-    jac.block<3, 3>(kDtheta, 6) = -QuatRight(err).bottomRightCorner<3, 3>() * dq_dbg;
-    jac.block<3, 3>(kDv, 0) = -Ri_T;
-    jac.block<3, 3>(kDv, 3) = -J.block<3, 3>(kDv, kBa);
-    jac.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
-    jac.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
-    jac.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
-    jac = sqrt_information * jac;
+  if (jacobians[1] != nullptr) {  // all rows
+    Eigen::Matrix<double, 15, 9> d = Eigen::Matrix<double, 15, 9>::Zero();
+    d.block<3, 3>(kDp, 0) = -Ri_T * T;
+    d.block<3, 3>(kDp, 3) = -J.block<3, 3>(kDp, kBa);
+    d.block<3, 3>(kDp, 6) = -J.block<3, 3>(kDp, kBg);
+    d.block<3, 3>(kDtheta, 6) = -QuatRight(err).bottomRightCorner<3, 3>() * dq_dbg;
+    d.block<3, 3>(kDv, 0) = -Ri_T;
+    d.block<3, 3>(kDv, 3) = -J.block<3, 3>(kDv, kBa);
+    d.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
+    d.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
+    d.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
+    Eigen::Map<RowMajor15x9>(jacobians[1]).noalias() = sqrt_information * d;
   }
-  if (jacobians[2] != nullptr) {
+  if (jacobians[2] != nullptr) {  // rows dp, dtheta
+    Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+    d.block<3, 3>(kDp, 0) = Ri_T;
+    d.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
     Eigen::Map<RowMajor15x7> jac(jacobians[2]);
-    jac.setZero();
-    jac.block<3, 3>(kDp, 0) = Ri_T;
-    jac.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
-    jac = sqrt_information * jac;
+    jac.leftCols<6>().noalias() = sqrt_information.leftCols<6>() * d;
+    jac.col(6).setZero();
   }
-  if (jacobians[3] != nullptr) {
-    Eigen::Map<RowMajor15x9> jac(jacobians[3]);
-    jac.setZero();
-    jac.block<3, 3>(kDv, 0) = Ri_T;
-    jac.block<3, 3>(kBa, 3) = Matrix3d::Identity();
-    jac.block<3, 3>(kBg, 6) = Matrix3d::Identity();
-    jac = sqrt_information * jac;
+  if (jacobians[3] != nullptr) {  // rows dv, b_a, b_g
+    Eigen::Matrix<double, 9, 9> d = Eigen::Matrix<double, 9, 9>::Zero();
+    d.block<3, 3>(0, 0) = Ri_T;
+    d.block<3, 3>(3, 3) = Matrix3d::Identity();
+    d.block<3, 3>(6, 6) = Matrix3d::Identity();
+    Eigen::Map<RowMajor15x9>(jacobians[3]).noalias() = sqrt_information.rightCols<9>() * d;
   }
   return true;
 }
