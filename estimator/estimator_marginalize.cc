@@ -19,11 +19,6 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     std::vector<std::unique_ptr<ceres::CostFunction>> costs;
     std::vector<MarginalizationTerm> terms;
     std::set<const double*> dropped = {oldest.pose, oldest.speed_bias};
-    if (prior_) {
-      auto factor = std::make_unique<MarginalizationFactor>(prior_);
-      terms.push_back({factor.get(), nullptr, factor->parameter_blocks()});
-      costs.push_back(std::move(factor));
-    }
     if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
     Frame& second = *window_[1];
     {
@@ -41,7 +36,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
       }
     }
     auto prior = std::make_shared<LinearPrior>();
-    if (Marginalize(terms, dropped, kEigenThreshold, prior.get()))
+    if (Marginalize(prior_.get(), terms, dropped, kEigenThreshold, prior.get()))
       prior_ = std::move(prior);
     else
       prior_.reset();
@@ -58,10 +53,9 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
   Frame& newest = *window_[n - 1];
   if (with_prior && prior_ &&
       (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
-    auto factor = std::make_unique<MarginalizationFactor>(prior_);
-    const std::vector<MarginalizationTerm> terms = {{factor.get(), nullptr, factor->parameter_blocks()}};
     auto prior = std::make_shared<LinearPrior>();
-    if (Marginalize(terms, {second_newest.pose, second_newest.speed_bias}, kEigenThreshold, prior.get()))
+    if (Marginalize(prior_.get(), {}, {second_newest.pose, second_newest.speed_bias}, kEigenThreshold,
+                    prior.get()))
       prior_ = std::move(prior);
     else
       prior_.reset();

@@ -1,8 +1,7 @@
 #include "estimator/marginalization.h"
 
-#include <algorithm>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -34,19 +33,79 @@ void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, Eigen::Matri
   *r = sqrt_rho1 / (1.0 - alpha) * r0;
 }
 
-// How many of the leading dropped blocks are 1-D and coupled to no other of them in H (their columns come
-// first).
-int LeadingUncoupledScalars(const Eigen::MatrixXd& H, const std::vector<double*>& order_dropped,
-                            const std::map<const double*, int>& ambient_of) {
-  int scalars = 0;
-  while (scalars < static_cast<int>(order_dropped.size()) &&
-         TangentSize(ambient_of.at(order_dropped[scalars])) == 1)
-    ++scalars;
-  for (int i = 0; i < scalars; ++i)
-    for (int j = 0; j < scalars; ++j)
-      if (i != j && H(i, j) != 0.0) return 0;
-  return scalars;
+// The prior's tangent offset dx = x - x0 at the blocks' current values, and per pose block the inverse right
+// Jacobian of its rotation part, d dx_theta / d delta theta (identity for the other blocks).
+struct PriorOffset {
+  Eigen::VectorXd dx;
+  std::vector<Eigen::Matrix3d> Jr_inv;  // per block; used for pose blocks only
+};
+
+PriorOffset OffsetOf(const LinearPrior& prior, double const* const* values) {
+  PriorOffset o;
+  o.dx.resize(prior.J.cols());
+  o.Jr_inv.resize(prior.blocks.size());
+  for (std::size_t k = 0, c = 0; k < prior.blocks.size(); ++k) {
+    const LinearPrior::Block& b = prior.blocks[k];
+    const double* x = values[k];
+    if (b.size == kPoseSize) {
+      o.dx.segment<3>(c) = PoseP(x) - PoseP(b.x0.data());
+      const Eigen::Vector3d phi = LogQ(PoseQ(b.x0.data()).conjugate() * PoseQ(x));
+      o.dx.segment<3>(c + 3) = phi;
+      o.Jr_inv[k] = RightJacobianInverse(phi);
+    } else {
+      for (int i = 0; i < b.size; ++i) o.dx[c + i] = x[i] - b.x0[i];
+    }
+    c += b.tangent;
+  }
+  return o;
 }
+
+// A parameter block of the normal equations. Uncoupled dropped scalars (see marginalization.h) have a sparse
+// row of their own (`scalar`); every other block has columns in the dense part (`column`), the other dropped
+// blocks first.
+struct Column {
+  double* address = nullptr;
+  int ambient = 0;
+  int tangent = 0;
+  bool dropped = false;
+  bool coupled = false;  // a dropped 1-D block that cannot be a scalar pivot
+  int scalar = -1;
+  int column = -1;
+};
+
+// Normal equations split as described above: H, b over the dense columns; per scalar s its diagonal entry
+// h[s], its row Hs.row(s) over the dense columns and its gradient bs[s].
+struct NormalEquations {
+  Eigen::MatrixXd H, Hs;
+  Eigen::VectorXd b, h, bs;
+
+  void Resize(int scalars, int dense) {
+    H = Eigen::MatrixXd::Zero(dense, dense);
+    b = Eigen::VectorXd::Zero(dense);
+    Hs = Eigen::MatrixXd::Zero(scalars, dense);
+    h = Eigen::VectorXd::Zero(scalars);
+    bs = Eigen::VectorXd::Zero(scalars);
+  }
+  // Adds the blocks (k, l) of a term's J^T J (JtJ) and J^T r (Jtr) whose columns start at ck, cl.
+  void Add(const Column& k, const Column& l, const Eigen::MatrixXd& JtJ, int ck, int cl) {
+    if (k.scalar >= 0 && l.scalar >= 0) {
+      h[k.scalar] += JtJ(ck, cl);  // the same scalar: uncoupled scalars share no term
+    } else if (k.scalar >= 0) {
+      Hs.row(k.scalar).segment(l.column, l.tangent) += JtJ.block(ck, cl, 1, l.tangent);
+    } else if (l.scalar < 0) {
+      H.block(k.column, l.column, k.tangent, l.tangent) += JtJ.block(ck, cl, k.tangent, l.tangent);
+    }
+  }
+  void AddGradient(const Column& k, const Eigen::VectorXd& Jtr, int ck) {
+    if (k.scalar >= 0)
+      bs[k.scalar] += Jtr[ck];
+    else
+      b.segment(k.column, k.tangent) += Jtr.segment(ck, k.tangent);
+  }
+  bool AllFinite() const {
+    return H.allFinite() && b.allFinite() && Hs.allFinite() && h.allFinite() && bs.allFinite();
+  }
+};
 
 }  // namespace
 
@@ -56,117 +115,174 @@ bool LinearPrior::Involves(const double* address) const {
   return false;
 }
 
-bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped,
-                 double eigen_threshold, LinearPrior* prior) {
-  // Column layout: dropped blocks first, then kept blocks, each in order of first appearance.
-  std::map<const double*, int> ambient_of;
-  std::vector<double*> order_dropped, order_kept;
-  for (const MarginalizationTerm& t : terms) {
-    const std::vector<int32_t>& sizes = t.cost->parameter_block_sizes();
-    for (std::size_t k = 0; k < t.blocks.size(); ++k) {
-      if (ambient_of.emplace(t.blocks[k], sizes[k]).second)
-        (dropped.count(t.blocks[k]) ? order_dropped : order_kept).push_back(t.blocks[k]);
+bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
+  // Blocks in order of first appearance: the previous prior's, then the terms'.
+  std::vector<Column> columns;
+  std::unordered_map<const double*, int> index_of;
+  auto add = [&](double* address, int ambient) {
+    if (!index_of.emplace(address, static_cast<int>(columns.size())).second) return;
+    Column c;
+    c.address = address;
+    c.ambient = ambient;
+    c.tangent = TangentSize(ambient);
+    c.dropped = dropped.count(address) > 0;
+    c.coupled = previous != nullptr && previous->Involves(address);  // the prior is dense over its blocks
+    columns.push_back(c);
+  };
+  if (previous != nullptr)
+    for (const LinearPrior::Block& b : previous->blocks) add(b.address, b.size);
+  std::vector<std::vector<int>> term_columns(terms.size());
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    const std::vector<int32_t>& sizes = terms[t].cost->parameter_block_sizes();
+    int dropped_scalars = 0;
+    for (std::size_t k = 0; k < terms[t].blocks.size(); ++k) {
+      add(terms[t].blocks[k], sizes[k]);
+      const int i = index_of.at(terms[t].blocks[k]);
+      term_columns[t].push_back(i);
+      if (columns[i].dropped && columns[i].tangent == 1) ++dropped_scalars;
     }
+    if (dropped_scalars > 1)
+      for (const int i : term_columns[t])
+        if (columns[i].tangent == 1) columns[i].coupled = true;
   }
-  // Dropped 1-D blocks (feature inverse depths) first: the Schur step below takes them one pivot at a time.
-  std::stable_partition(order_dropped.begin(), order_dropped.end(),
-                        [&](const double* b) { return TangentSize(ambient_of[b]) == 1; });
-  std::map<const double*, int> column_of;
-  int m = 0;
-  for (double* b : order_dropped) {
-    column_of[b] = m;
-    m += TangentSize(ambient_of[b]);
-  }
-  int n = 0;
-  for (double* b : order_kept) {
-    column_of[b] = m + n;
-    n += TangentSize(ambient_of[b]);
-  }
+  int scalars = 0, m = 0, n = 0;
+  for (Column& c : columns)
+    if (c.dropped && c.tangent == 1 && !c.coupled) c.scalar = scalars++;
+  for (Column& c : columns)
+    if (c.dropped && c.scalar < 0) {
+      c.column = m;
+      m += c.tangent;
+    }
+  for (Column& c : columns)
+    if (!c.dropped) {
+      c.column = m + n;
+      n += c.tangent;
+    }
   if (n == 0) return false;
 
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(m + n);
-  for (const MarginalizationTerm& t : terms) {
-    const std::vector<int32_t>& sizes = t.cost->parameter_block_sizes();
-    const int rows = t.cost->num_residuals();
-    Eigen::VectorXd r(rows);
-    std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jac(t.blocks.size());
-    std::vector<double*> jac_ptr(t.blocks.size());
-    int total = 0;
-    for (std::size_t k = 0; k < t.blocks.size(); ++k) {
-      jac[k].resize(rows, sizes[k]);
-      jac_ptr[k] = jac[k].data();
-      total += TangentSize(sizes[k]);
+  NormalEquations eq;
+  eq.Resize(scalars, m + n);
+  if (previous != nullptr) {
+    // The prior at the current values: J_x = J D, r_x = r + J dx with D = diag(I, Jr_inv per rotation), so
+    // J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
+    std::vector<const double*> values;
+    for (const LinearPrior::Block& b : previous->blocks) values.push_back(b.address);
+    const PriorOffset o = OffsetOf(*previous, values.data());
+    Eigen::MatrixXd H = previous->H;
+    Eigen::VectorXd g = previous->g + previous->H * o.dx;
+    for (std::size_t k = 0, c = 0; k < previous->blocks.size(); ++k) {
+      if (previous->blocks[k].size == kPoseSize) {
+        H.middleCols<3>(c + 3) = H.middleCols<3>(c + 3) * o.Jr_inv[k];
+        H.middleRows<3>(c + 3) = o.Jr_inv[k].transpose() * H.middleRows<3>(c + 3);
+        g.segment<3>(c + 3) = o.Jr_inv[k].transpose() * g.segment<3>(c + 3);
+      }
+      c += previous->blocks[k].tangent;
     }
-    if (!t.cost->Evaluate(t.blocks.data(), r.data(), jac_ptr.data())) return false;
-    Eigen::MatrixXd J(rows, total);
-    for (std::size_t k = 0, c = 0; k < t.blocks.size(); ++k) {
-      const int tangent = TangentSize(sizes[k]);
-      J.middleCols(c, tangent) = jac[k].leftCols(tangent);
+    for (std::size_t k = 0, ck = 0; k < previous->blocks.size(); ++k) {
+      const Column& col_k = columns[index_of.at(previous->blocks[k].address)];
+      eq.AddGradient(col_k, g, static_cast<int>(ck));
+      for (std::size_t l = 0, cl = 0; l < previous->blocks.size(); ++l) {
+        const Column& col_l = columns[index_of.at(previous->blocks[l].address)];
+        eq.Add(col_k, col_l, H, static_cast<int>(ck), static_cast<int>(cl));
+        cl += col_l.tangent;
+      }
+      ck += col_k.tangent;
+    }
+  }
+
+  Eigen::VectorXd r;
+  Eigen::MatrixXd J, JtJ;
+  Eigen::VectorXd Jtr;
+  std::vector<double> jacobian_storage;
+  std::vector<double*> jacobian_ptr;
+  for (std::size_t t = 0; t < terms.size(); ++t) {
+    const MarginalizationTerm& term = terms[t];
+    const std::vector<int32_t>& sizes = term.cost->parameter_block_sizes();
+    const int rows = term.cost->num_residuals();
+    int ambient_total = 0, total = 0;
+    for (const int i : term_columns[t]) {
+      ambient_total += columns[i].ambient;
+      total += columns[i].tangent;
+    }
+    r.resize(rows);
+    jacobian_storage.resize(static_cast<std::size_t>(rows) * ambient_total);
+    jacobian_ptr.clear();
+    for (std::size_t k = 0, offset = 0; k < term.blocks.size(); ++k) {
+      jacobian_ptr.push_back(jacobian_storage.data() + offset);
+      offset += static_cast<std::size_t>(rows) * sizes[k];
+    }
+    if (!term.cost->Evaluate(term.blocks.data(), r.data(), jacobian_ptr.data())) return false;
+    J.resize(rows, total);
+    for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
+      const int tangent = columns[term_columns[t][k]].tangent;
+      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      J.middleCols(c, tangent) = Eigen::Map<const RowMajor>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
-    Robustify(t.loss, &r, &J);
+    Robustify(term.loss, &r, &J);
     // Small terms (a reprojection: 2 x 13) skip the blocked matrix-product kernel and its set-up.
-    const Eigen::MatrixXd JtJ = rows * total <= 64 ? Eigen::MatrixXd(J.transpose().lazyProduct(J))
-                                                   : Eigen::MatrixXd(J.transpose() * J);
-    const Eigen::VectorXd Jtr = J.transpose() * r;
-    for (std::size_t k = 0, ck = 0; k < t.blocks.size(); ++k) {
-      const int tk = TangentSize(sizes[k]);
-      const int col_k = column_of[t.blocks[k]];
-      b.segment(col_k, tk) += Jtr.segment(ck, tk);
-      for (std::size_t l = 0, cl = 0; l < t.blocks.size(); ++l) {
-        const int tl = TangentSize(sizes[l]);
-        H.block(col_k, column_of[t.blocks[l]], tk, tl) += JtJ.block(ck, cl, tk, tl);
-        cl += tl;
+    if (rows * total <= 64)
+      JtJ = J.transpose().lazyProduct(J);
+    else
+      JtJ.noalias() = J.transpose() * J;
+    Jtr.noalias() = J.transpose() * r;
+    for (std::size_t k = 0, ck = 0; k < term.blocks.size(); ++k) {
+      const Column& col_k = columns[term_columns[t][k]];
+      eq.AddGradient(col_k, Jtr, static_cast<int>(ck));
+      for (std::size_t l = 0, cl = 0; l < term.blocks.size(); ++l) {
+        const Column& col_l = columns[term_columns[t][l]];
+        eq.Add(col_k, col_l, JtJ, static_cast<int>(ck), static_cast<int>(cl));
+        cl += col_l.tangent;
       }
-      ck += tk;
+      ck += col_k.tangent;
     }
   }
-  if (!H.allFinite() || !b.allFinite()) return false;
+  if (!eq.AllFinite()) return false;
 
-  // Schur complement of the dropped blocks. The leading scalar columns that couple to no other scalar column
-  // (inverse depths: each feature's factors touch only its own depth) are eliminated one pivot at a time,
-  // touching only the entries their column reaches; the remaining dropped columns (the oldest frame's pose
-  // and speed-bias) by the eigen-decomposition. For a positive semi-definite H the Schur complement does not
-  // depend on the order of elimination nor on the generalized inverse used (pivots at or below the threshold
-  // count as zero, as dropped eigenvalues do).
-  const int scalars = LeadingUncoupledScalars(H, order_dropped, ambient_of);
-  for (int i = 0; i < scalars; ++i) {
-    const double pivot = H(i, i);
+  // Scalar pivots: each touches only the dense entries its row reaches.
+  Eigen::MatrixXd& H = eq.H;
+  Eigen::VectorXd& b = eq.b;
+  std::vector<int> reach;
+  for (int s = 0; s < scalars; ++s) {
+    const double pivot = eq.h[s];
     if (!(pivot > eigen_threshold)) continue;
-    std::vector<int> reach;
-    for (int j = scalars; j < m + n; ++j)
-      if (H(j, i) != 0.0) reach.push_back(j);
+    reach.clear();
+    for (int j = 0; j < m + n; ++j)
+      if (eq.Hs(s, j) != 0.0) reach.push_back(j);
     for (const int j : reach) {
-      const double f = H(j, i) / pivot;
-      for (const int k : reach) H(j, k) -= f * H(i, k);
-      b[j] -= f * b[i];
+      const double f = eq.Hs(s, j) / pivot;
+      for (const int k : reach) H(j, k) -= f * eq.Hs(s, k);
+      b[j] -= f * eq.bs[s];
     }
   }
-  const int rest = m - scalars;
+  // The other dropped blocks: pseudo-inverse by eigen-decomposition.
   Eigen::MatrixXd A = H.bottomRightCorner(n, n);
   Eigen::VectorXd bk = b.tail(n);
-  if (rest > 0) {
-    const Eigen::MatrixXd Hmm =
-        0.5 * (H.block(scalars, scalars, rest, rest) + H.block(scalars, scalars, rest, rest).transpose());
+  if (m > 0) {
+    const Eigen::MatrixXd Hmm = 0.5 * (H.topLeftCorner(m, m) + H.topLeftCorner(m, m).transpose());
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hmm);
     const Eigen::VectorXd inv =
         (es.eigenvalues().array() > eigen_threshold).select(es.eigenvalues().array().inverse(), 0.0);
     const Eigen::MatrixXd Hmm_inv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
-    const Eigen::MatrixXd Hkm_Hmm_inv = H.block(m, scalars, n, rest) * Hmm_inv;
-    A -= Hkm_Hmm_inv * H.block(scalars, m, rest, n);
-    bk -= Hkm_Hmm_inv * b.segment(scalars, rest);
+    const Eigen::MatrixXd Hkm_Hmm_inv = H.bottomLeftCorner(n, m) * Hmm_inv;
+    A.noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
+    bk.noalias() -= Hkm_Hmm_inv * b.head(m);
   }
   // Square-root form of the kept block: Cholesky of A with a ridge of `eigen_threshold` (an information of
   // 1e-8 is no constraint at all but makes the unobservable gauge directions factorizable), J_p = L^T,
   // r_p = L^-1 b. Falls back to the eigen-decomposition (eigenvalues below the threshold dropped) if A is not
   // positive semi-definite enough for that.
-  const Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
-  Eigen::LLT<Eigen::MatrixXd> llt(A_sym + eigen_threshold * Eigen::MatrixXd::Identity(n, n));
+  Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
+  A_sym.diagonal().array() += eigen_threshold;
+  Eigen::LLT<Eigen::MatrixXd> llt(A_sym);
   if (llt.info() == Eigen::Success) {
     prior->J = llt.matrixU();
     prior->r = llt.matrixL().solve(bk);
+    prior->H = std::move(A_sym);
+    prior->g = bk;
   } else {
+    A_sym.diagonal().array() -= eigen_threshold;
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A_sym);
     const Eigen::VectorXd& S = es.eigenvalues();
     std::vector<int> keep;
@@ -181,14 +297,17 @@ bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<c
       prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
       prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
     }
+    prior->H = prior->J.transpose() * prior->J;
+    prior->g = prior->J.transpose() * prior->r;
   }
   prior->blocks.clear();
-  for (double* address : order_kept) {
+  for (const Column& c : columns) {
+    if (c.dropped) continue;
     LinearPrior::Block block;
-    block.address = address;
-    block.size = ambient_of[address];
-    block.tangent = TangentSize(block.size);
-    block.x0.assign(address, address + block.size);
+    block.address = c.address;
+    block.size = c.ambient;
+    block.tangent = c.tangent;
+    block.x0.assign(c.address, c.address + c.ambient);
     prior->blocks.push_back(std::move(block));
   }
   return prior->J.allFinite() && prior->r.allFinite();
@@ -209,33 +328,18 @@ std::vector<double*> MarginalizationFactor::parameter_blocks() const {
 bool MarginalizationFactor::Evaluate(double const* const* parameters, double* residuals,
                                      double** jacobians) const {
   const int rows = static_cast<int>(prior_->r.size());
-  const int n = static_cast<int>(prior_->J.cols());
-  Eigen::VectorXd dx(n);
-  std::vector<Eigen::Matrix3d> Jr_inv(prior_->blocks.size());
-  for (std::size_t k = 0, c = 0; k < prior_->blocks.size(); ++k) {
-    const LinearPrior::Block& b = prior_->blocks[k];
-    const double* x = parameters[k];
-    if (b.size == kPoseSize) {
-      dx.segment<3>(c) = PoseP(x) - PoseP(b.x0.data());
-      const Eigen::Vector3d phi = LogQ(PoseQ(b.x0.data()).conjugate() * PoseQ(x));
-      dx.segment<3>(c + 3) = phi;
-      Jr_inv[k] = RightJacobianInverse(phi);
-    } else {
-      for (int i = 0; i < b.size; ++i) dx[c + i] = x[i] - b.x0[i];
-    }
-    c += b.tangent;
-  }
-  Eigen::Map<Eigen::VectorXd>(residuals, rows) = prior_->r + prior_->J * dx;
+  const PriorOffset o = OffsetOf(*prior_, parameters);
+  Eigen::Map<Eigen::VectorXd>(residuals, rows).noalias() = prior_->r + prior_->J * o.dx;
   if (jacobians == nullptr) return true;
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   for (std::size_t k = 0, c = 0; k < prior_->blocks.size(); ++k) {
     const LinearPrior::Block& b = prior_->blocks[k];
     if (jacobians[k] != nullptr) {
-      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> jac(jacobians[k],
-                                                                                             rows, b.size);
-      jac.setZero();
+      Eigen::Map<RowMajor> jac(jacobians[k], rows, b.size);
       if (b.size == kPoseSize) {
         jac.leftCols<3>() = prior_->J.middleCols<3>(c);
-        jac.middleCols<3>(3) = prior_->J.middleCols<3>(c + 3) * Jr_inv[k];
+        jac.middleCols<3>(3).noalias() = prior_->J.middleCols<3>(c + 3) * o.Jr_inv[k];
+        jac.col(6).setZero();
       } else {
         jac = prior_->J.middleCols(c, b.size);
       }

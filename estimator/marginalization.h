@@ -1,14 +1,20 @@
 // Marginalization: the information that dropped parameter blocks carried, kept as a linear prior.
 //
 // Marginalize() evaluates every residual block touching the dropped blocks at the current values (robust loss
-// applied as Ceres' corrector does), forms H = J^T J and b = J^T r over all involved blocks (tangent space),
-// eliminates the dropped ones with the Schur complement (pseudo-inverse of H_mm by eigen-decomposition,
-// eigenvalues below `eigen_threshold` dropped), and stores the result in square-root form J_p, r_p with
-// J_p^T J_p = S (+ a ridge of `eigen_threshold`) and J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces
-// the Schur complement S and its gradient b_S for the kept blocks. J_p is the Cholesky factor of S (VINS-Mono
-// stores sqrt(eigenvalues) V^T instead: the same quadratic, at a fraction of the cost). MarginalizationFactor
-// evaluates r_p + J_p dx with dx = x - x0 in the tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept
-// blocks at their current addresses.
+// applied as Ceres' corrector does), adds the previous prior at the current values, forms H = J^T J and
+// b = J^T r over all involved blocks (tangent space), eliminates the dropped ones with the Schur complement
+// and stores the result in square-root form J_p, r_p with J_p^T J_p = S (+ a ridge of `eigen_threshold`) and
+// J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces the Schur complement S and its gradient b_S for the
+// kept blocks. J_p is the Cholesky factor of S (VINS-Mono stores sqrt(eigenvalues) V^T instead: the same
+// quadratic, at a fraction of the cost). MarginalizationFactor evaluates r_p + J_p dx with dx = x - x0 in the
+// tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept blocks at their current addresses.
+//
+// Elimination: dropped 1-D blocks that share no residual block with another dropped 1-D block (feature
+// inverse depths: each feature's factors touch only its own depth) are eliminated one scalar pivot at a time
+// from a sparse row each; the other dropped blocks (the oldest frame's pose and speed-bias) through the
+// pseudo-inverse by eigen-decomposition, eigenvalues below `eigen_threshold` dropped. For a positive
+// semi-definite H the Schur complement depends neither on the order of elimination nor on the generalized
+// inverse used (a pivot at or below the threshold counts as zero, as a dropped eigenvalue does).
 #pragma once
 
 #include <memory>
@@ -38,13 +44,18 @@ struct LinearPrior {
   std::vector<Block> blocks;
   Eigen::MatrixXd J;  // rows x sum of tangent sizes
   Eigen::VectorXd r;
+  // The same quadratic in information form at x0, H = J^T J and g = J^T r: the next marginalization adds
+  // these instead of multiplying out J.
+  Eigen::MatrixXd H;
+  Eigen::VectorXd g;
 
   bool Involves(const double* address) const;
 };
 
-// Returns false when nothing is left to keep or the numbers are not finite.
-bool Marginalize(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped,
-                 double eigen_threshold, LinearPrior* prior);
+// `previous` (may be null) is the prior so far; it enters at its blocks' current values, exactly as
+// MarginalizationFactor would. Returns false when nothing is left to keep or the numbers are not finite.
+bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior);
 
 class MarginalizationFactor : public ceres::CostFunction {
  public:

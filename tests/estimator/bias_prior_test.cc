@@ -39,7 +39,7 @@ TEST(BiasPriorTest, MarginalizationCarriesThePriorToTheNextFrame) {
       {&imu, nullptr, {pose_i.data(), sb_i.data(), pose_j.data(), sb_j.data()}}};
   LinearPrior prior;
   const double ridge = 1e-8;
-  ASSERT_TRUE(Marginalize(terms, {pose_i.data(), sb_i.data()}, ridge, &prior));
+  ASSERT_TRUE(Marginalize(nullptr, terms, {pose_i.data(), sb_i.data()}, ridge, &prior));
   ASSERT_EQ(prior.blocks.size(), 2u);
   ASSERT_EQ(prior.blocks[1].address, sb_j.data());
   const Eigen::MatrixXd S = prior.J.transpose() * prior.J - ridge * Eigen::MatrixXd::Identity(15, 15);

@@ -145,7 +145,7 @@ TEST(FactorJacobianTest, MarginalizationFactor) {
       {&f1, nullptr, {pose_i.data(), pose_j.data(), depth.data()}},
       {&f2, nullptr, {pose_i.data(), pose_k.data(), depth.data()}}};
   auto prior = std::make_shared<LinearPrior>();
-  ASSERT_TRUE(Marginalize(terms, {pose_i.data(), depth.data()}, 1e-8, prior.get()));
+  ASSERT_TRUE(Marginalize(nullptr, terms, {pose_i.data(), depth.data()}, 1e-8, prior.get()));
   ASSERT_EQ(prior->blocks.size(), 2u);
   const MarginalizationFactor factor(prior);
   std::vector<double> pose_j_moved =
