@@ -39,7 +39,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   const Matrix3d dq_dbg = RightJacobian(J.block<3, 3>(kDtheta, kBg) * dbg) * J.block<3, 3>(kDtheta, kBg);
   // Each block is built unwhitened over the residual rows it reaches and whitened by the matching columns of
   // the upper-triangular S: rows below the block's first nonzero row stay zero, so fixed-size products over
-  // those rows and columns only replace full 15x15 products.
+  // those rows and columns only replace full 15x15 products (lazy: coefficient-wise, no GEMM set-up).
   using RowMajor15x7 = Eigen::Matrix<double, 15, 7, Eigen::RowMajor>;
   using RowMajor15x9 = Eigen::Matrix<double, 15, 9, Eigen::RowMajor>;
   if (jacobians[0] != nullptr) {  // rows dp, dtheta, dv
@@ -49,7 +49,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     d.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
     d.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
     Eigen::Map<RowMajor15x7> jac(jacobians[0]);
-    jac.leftCols<6>().noalias() = sqrt_information.leftCols<9>() * d;
+    jac.leftCols<6>().noalias() = sqrt_information.leftCols<9>().lazyProduct(d);
     jac.col(6).setZero();
   }
   if (jacobians[1] != nullptr) {  // all rows
@@ -63,14 +63,14 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     d.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
     d.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
     d.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
-    Eigen::Map<RowMajor15x9>(jacobians[1]).noalias() = sqrt_information * d;
+    Eigen::Map<RowMajor15x9>(jacobians[1]).noalias() = sqrt_information.lazyProduct(d);
   }
   if (jacobians[2] != nullptr) {  // rows dp, dtheta
     Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
     d.block<3, 3>(kDp, 0) = Ri_T;
     d.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
     Eigen::Map<RowMajor15x7> jac(jacobians[2]);
-    jac.leftCols<6>().noalias() = sqrt_information.leftCols<6>() * d;
+    jac.leftCols<6>().noalias() = sqrt_information.leftCols<6>().lazyProduct(d);
     jac.col(6).setZero();
   }
   if (jacobians[3] != nullptr) {  // rows dv, b_a, b_g
@@ -78,7 +78,7 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
     d.block<3, 3>(0, 0) = Ri_T;
     d.block<3, 3>(3, 3) = Matrix3d::Identity();
     d.block<3, 3>(6, 6) = Matrix3d::Identity();
-    Eigen::Map<RowMajor15x9>(jacobians[3]).noalias() = sqrt_information.rightCols<9>() * d;
+    Eigen::Map<RowMajor15x9>(jacobians[3]).noalias() = sqrt_information.rightCols<9>().lazyProduct(d);
   }
   return true;
 }
