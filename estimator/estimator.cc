@@ -73,7 +73,8 @@ Eigen::Isometry3d Estimator::T_WC(uint64_t frame_id) const {
   return T_WB * T_BC_;
 }
 
-std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(FeatureTrack& track) const {
+std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(const FeatureTrack& track,
+                                                                      double* inv_depth) const {
   const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
   const auto& [anchor_id, n_anchor] = track.observations.front();
   double* anchor_pose = const_cast<double*>(FrameById(anchor_id).pose);
@@ -81,7 +82,7 @@ std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(FeatureT
   for (std::size_t k = 1; k < track.observations.size(); ++k) {
     const auto& [frame_id, n] = track.observations[k];
     terms.push_back({std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information),
-                     {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), &track.inv_depth}});
+                     {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), inv_depth}});
   }
   return terms;
 }

@@ -88,12 +88,12 @@ class Estimator {
   void MarginalizeSecondNewest(bool with_prior);
   void Reset();
   // One reprojection factor per observation of a usable track after its anchor, with its parameter blocks
-  // (anchor pose, observing pose, inverse depth).
+  // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it).
   struct ReprojectionTerm {
     std::unique_ptr<ReprojectionFactor> factor;
     std::array<double*, 3> blocks;
   };
-  std::vector<ReprojectionTerm> ReprojectionTermsOf(FeatureTrack& track) const;
+  std::vector<ReprojectionTerm> ReprojectionTermsOf(const FeatureTrack& track, double* inv_depth) const;
   Eigen::Isometry3d T_WC(uint64_t frame_id) const;
   CameraPoseLookup CameraPoses() const;
   const Frame& FrameById(uint64_t id) const;
