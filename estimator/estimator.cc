@@ -65,8 +65,7 @@ const Estimator::Frame& Estimator::FrameById(uint64_t id) const {
   return *window_.back();  // unreachable for ids of window frames
 }
 
-Eigen::Isometry3d Estimator::T_WC(uint64_t frame_id) const {
-  const Frame& f = FrameById(frame_id);
+Eigen::Isometry3d Estimator::T_WC(const Frame& f) const {
   Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
   T_WB.linear() = PoseQ(f.pose).normalized().toRotationMatrix();
   T_WB.translation() = PoseP(f.pose);
@@ -88,7 +87,14 @@ std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(const Fe
 }
 
 CameraPoseLookup Estimator::CameraPoses() const {
-  return [this](uint64_t id) { return T_WC(id); };
+  // Computed once per call: feature bookkeeping looks poses up several times per observation.
+  std::vector<std::pair<uint64_t, Eigen::Isometry3d>> poses;
+  for (const auto& f : window_) poses.emplace_back(f->id, T_WC(*f));
+  return [poses = std::move(poses)](uint64_t id) {
+    for (const auto& [frame_id, T] : poses)
+      if (frame_id == id) return T;
+    return poses.back().second;  // unreachable for ids of window frames
+  };
 }
 
 void Estimator::Predict(Frame* frame) const {

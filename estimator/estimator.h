@@ -94,7 +94,8 @@ class Estimator {
     std::array<double*, 3> blocks;
   };
   std::vector<ReprojectionTerm> ReprojectionTermsOf(const FeatureTrack& track, double* inv_depth) const;
-  Eigen::Isometry3d T_WC(uint64_t frame_id) const;
+  Eigen::Isometry3d T_WC(const Frame& frame) const;
+  // T_WC of every window frame by id, as of this call.
   CameraPoseLookup CameraPoses() const;
   const Frame& FrameById(uint64_t id) const;
   int WindowCapacity() const { return options_.window.size + 1; }
