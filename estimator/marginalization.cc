@@ -1,5 +1,6 @@
 #include "estimator/marginalization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -73,11 +74,15 @@ struct Column {
   int column = -1;
 };
 
-// Normal equations split as described above: H, b over the dense columns; per scalar s its diagonal entry
-// h[s], its row Hs.row(s) over the dense columns and its gradient bs[s].
+// Normal equations split as described above: H, b over the dense columns, of which H holds the blocks on
+// and above the diagonal only (the lower ones are never read); per scalar s its diagonal entry h[s], its row
+// Hs.row(s) over the dense columns, the dense blocks that row reaches (`reach[s]`, indices into the columns)
+// and its gradient bs[s].
 struct NormalEquations {
-  Eigen::MatrixXd H, Hs;
+  Eigen::MatrixXd H;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Hs;
   Eigen::VectorXd b, h, bs;
+  std::vector<std::vector<int>> reach;
 
   void Resize(int scalars, int dense) {
     H = Eigen::MatrixXd::Zero(dense, dense);
@@ -85,14 +90,17 @@ struct NormalEquations {
     Hs = Eigen::MatrixXd::Zero(scalars, dense);
     h = Eigen::VectorXd::Zero(scalars);
     bs = Eigen::VectorXd::Zero(scalars);
+    reach.assign(scalars, {});
   }
-  // Adds the blocks (k, l) of a term's J^T J (JtJ) and J^T r (Jtr) whose columns start at ck, cl.
-  void Add(const Column& k, const Column& l, const Eigen::MatrixXd& JtJ, int ck, int cl) {
+  // Adds the block (k, l) of a term's J^T J whose columns start at ck, cl (l is the column l_index).
+  void Add(const Column& k, const Column& l, int l_index, const Eigen::MatrixXd& JtJ, int ck, int cl) {
     if (k.scalar >= 0 && l.scalar >= 0) {
       h[k.scalar] += JtJ(ck, cl);  // the same scalar: uncoupled scalars share no term
     } else if (k.scalar >= 0) {
       Hs.row(k.scalar).segment(l.column, l.tangent) += JtJ.block(ck, cl, 1, l.tangent);
-    } else if (l.scalar < 0) {
+      std::vector<int>& r = reach[k.scalar];
+      if (std::find(r.begin(), r.end(), l_index) == r.end()) r.push_back(l_index);
+    } else if (l.scalar < 0 && k.column <= l.column) {
       H.block(k.column, l.column, k.tangent, l.tangent) += JtJ.block(ck, cl, k.tangent, l.tangent);
     }
   }
@@ -104,6 +112,24 @@ struct NormalEquations {
   }
   bool AllFinite() const {
     return H.allFinite() && b.allFinite() && Hs.allFinite() && h.allFinite() && bs.allFinite();
+  }
+  // Eliminates every scalar with a pivot above `threshold` (the others count as zero), block by block over
+  // the dense blocks its row reaches.
+  void EliminateScalars(const std::vector<Column>& columns, double threshold) {
+    for (int s = 0; s < static_cast<int>(h.size()); ++s) {
+      if (!(h[s] > threshold)) continue;
+      for (const int i : reach[s]) {
+        const Column& a = columns[i];
+        const auto f = (Hs.row(s).segment(a.column, a.tangent) / h[s]).transpose().eval();
+        b.segment(a.column, a.tangent) -= f * bs[s];
+        for (const int j : reach[s]) {
+          const Column& c = columns[j];
+          if (a.column <= c.column)
+            H.block(a.column, c.column, a.tangent, c.tangent).noalias() -=
+                f * Hs.row(s).segment(c.column, c.tangent);
+        }
+      }
+    }
   }
 };
 
@@ -183,8 +209,9 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       const Column& col_k = columns[index_of.at(previous->blocks[k].address)];
       eq.AddGradient(col_k, g, static_cast<int>(ck));
       for (std::size_t l = 0, cl = 0; l < previous->blocks.size(); ++l) {
-        const Column& col_l = columns[index_of.at(previous->blocks[l].address)];
-        eq.Add(col_k, col_l, H, static_cast<int>(ck), static_cast<int>(cl));
+        const int l_index = index_of.at(previous->blocks[l].address);
+        const Column& col_l = columns[l_index];
+        eq.Add(col_k, col_l, l_index, H, static_cast<int>(ck), static_cast<int>(cl));
         cl += col_l.tangent;
       }
       ck += col_k.tangent;
@@ -232,7 +259,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       eq.AddGradient(col_k, Jtr, static_cast<int>(ck));
       for (std::size_t l = 0, cl = 0; l < term.blocks.size(); ++l) {
         const Column& col_l = columns[term_columns[t][l]];
-        eq.Add(col_k, col_l, JtJ, static_cast<int>(ck), static_cast<int>(cl));
+        eq.Add(col_k, col_l, term_columns[t][l], JtJ, static_cast<int>(ck), static_cast<int>(cl));
         cl += col_l.tangent;
       }
       ck += col_k.tangent;
@@ -240,34 +267,20 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   }
   if (!eq.AllFinite()) return false;
 
-  // Scalar pivots: each touches only the dense entries its row reaches.
-  Eigen::MatrixXd& H = eq.H;
-  Eigen::VectorXd& b = eq.b;
-  std::vector<int> reach;
-  for (int s = 0; s < scalars; ++s) {
-    const double pivot = eq.h[s];
-    if (!(pivot > eigen_threshold)) continue;
-    reach.clear();
-    for (int j = 0; j < m + n; ++j)
-      if (eq.Hs(s, j) != 0.0) reach.push_back(j);
-    for (const int j : reach) {
-      const double f = eq.Hs(s, j) / pivot;
-      for (const int k : reach) H(j, k) -= f * eq.Hs(s, k);
-      b[j] -= f * eq.bs[s];
-    }
-  }
+  eq.EliminateScalars(columns, eigen_threshold);
   // The other dropped blocks: pseudo-inverse by eigen-decomposition.
-  Eigen::MatrixXd A = H.bottomRightCorner(n, n);
-  Eigen::VectorXd bk = b.tail(n);
+  const Eigen::MatrixXd& H = eq.H;
+  Eigen::MatrixXd A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
+  Eigen::VectorXd bk = eq.b.tail(n);
   if (m > 0) {
-    const Eigen::MatrixXd Hmm = 0.5 * (H.topLeftCorner(m, m) + H.topLeftCorner(m, m).transpose());
+    const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hmm);
     const Eigen::VectorXd inv =
         (es.eigenvalues().array() > eigen_threshold).select(es.eigenvalues().array().inverse(), 0.0);
     const Eigen::MatrixXd Hmm_inv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
-    const Eigen::MatrixXd Hkm_Hmm_inv = H.bottomLeftCorner(n, m) * Hmm_inv;
+    const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
     A.noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
-    bk.noalias() -= Hkm_Hmm_inv * b.head(m);
+    bk.noalias() -= Hkm_Hmm_inv * eq.b.head(m);
   }
   // Square-root form of the kept block: Cholesky of A with a ridge of `eigen_threshold` (an information of
   // 1e-8 is no constraint at all but makes the unobservable gauge directions factorizable), J_p = L^T,
