@@ -37,27 +37,25 @@ bool ReprojectionFactor::Evaluate(double const* const* parameters, double* resid
   d_r_d_pCj << 1.0 / z, 0.0, -p_Cj.x() / (z * z),  //
       0.0, 1.0 / z, -p_Cj.y() / (z * z);
   d_r_d_pCj *= sqrt_information_;
-  const Matrix3d R_CW_j = R_BC_.transpose() * R_j.transpose();
+  // Chain rule through p_Cj = R_CW_j (p_W - p_j) + const: d r / d p_W, and its rotation into B_i.
+  const Eigen::Matrix<double, 2, 3> d_r_d_pW = d_r_d_pCj * (R_BC_.transpose() * R_j.transpose());
+  const Eigen::Matrix<double, 2, 3> d_r_d_pBi = d_r_d_pW * R_i;
   using RowMajor2x7 = Eigen::Matrix<double, 2, 7, Eigen::RowMajor>;
   if (jacobians[0] != nullptr) {
     Eigen::Map<RowMajor2x7> jac(jacobians[0]);
-    Eigen::Matrix<double, 3, 6> d;
-    d.leftCols<3>() = R_CW_j;
-    d.rightCols<3>() = -R_CW_j * R_i * Skew(p_Bi);
-    jac.leftCols<6>() = d_r_d_pCj * d;
+    jac.leftCols<3>() = d_r_d_pW;
+    jac.middleCols<3>(3) = -d_r_d_pBi * Skew(p_Bi);
     jac.col(6).setZero();
   }
   if (jacobians[1] != nullptr) {
     Eigen::Map<RowMajor2x7> jac(jacobians[1]);
-    Eigen::Matrix<double, 3, 6> d;
-    d.leftCols<3>() = -R_CW_j;
-    d.rightCols<3>() = R_BC_.transpose() * Skew(p_Bj);
-    jac.leftCols<6>() = d_r_d_pCj * d;
+    jac.leftCols<3>() = -d_r_d_pW;
+    jac.middleCols<3>(3) = (d_r_d_pCj * R_BC_.transpose()) * Skew(p_Bj);
     jac.col(6).setZero();
   }
   if (jacobians[2] != nullptr) {
     Eigen::Map<Eigen::Vector2d> jac(jacobians[2]);
-    jac = d_r_d_pCj * (R_CW_j * R_i * R_BC_ * (-n_i_ / (rho * rho)));
+    jac = d_r_d_pBi * (R_BC_ * (-n_i_ / (rho * rho)));
   }
   return true;
 }
