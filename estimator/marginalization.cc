@@ -61,6 +61,16 @@ PriorOffset OffsetOf(const LinearPrior& prior, double const* const* values) {
   return o;
 }
 
+// Pseudo-inverse of a symmetric positive semi-definite matrix by eigen-decomposition, eigenvalues at or below
+// `threshold` taken as zero; N: its size if fixed.
+template <int N>
+Eigen::MatrixXd PseudoInverse(const Eigen::MatrixXd& A, double threshold) {
+  using Matrix = Eigen::Matrix<double, N, N>;
+  const Eigen::SelfAdjointEigenSolver<Matrix> es{Matrix(A)};
+  const auto inv = (es.eigenvalues().array() > threshold).select(es.eigenvalues().array().inverse(), 0.0).eval();
+  return es.eigenvectors() * inv.matrix().asDiagonal() * es.eigenvectors().transpose();
+}
+
 // A parameter block of the normal equations. Uncoupled dropped scalars (see marginalization.h) have a sparse
 // row of their own (`scalar`); every other block has columns in the dense part (`column`), the other dropped
 // blocks first.
@@ -274,10 +284,10 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   Eigen::VectorXd bk = eq.b.tail(n);
   if (m > 0) {
     const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Hmm);
-    const Eigen::VectorXd inv =
-        (es.eigenvalues().array() > eigen_threshold).select(es.eigenvalues().array().inverse(), 0.0);
-    const Eigen::MatrixXd Hmm_inv = es.eigenvectors() * inv.asDiagonal() * es.eigenvectors().transpose();
+    // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
+    const Eigen::MatrixXd Hmm_inv = m == kPoseTangentSize + kSpeedBiasSize
+                                        ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
+                                        : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
     const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
     A.noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
     bk.noalias() -= Hkm_Hmm_inv * eq.b.head(m);
