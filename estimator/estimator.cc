@@ -72,18 +72,28 @@ Eigen::Isometry3d Estimator::T_WC(const Frame& f) const {
   return T_WB * T_BC_;
 }
 
-std::vector<Estimator::ReprojectionTerm> Estimator::ReprojectionTermsOf(const FeatureTrack& track,
-                                                                      double* inv_depth) const {
+void Estimator::AppendReprojectionTerms(int id, const FeatureTrack& track, double* inv_depth,
+                                        std::vector<ReprojectionTerm>* terms) {
   const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
   const auto& [anchor_id, n_anchor] = track.observations.front();
   double* anchor_pose = const_cast<double*>(FrameById(anchor_id).pose);
-  std::vector<ReprojectionTerm> terms;
+  // Reuse the cached factor of every (anchor, frame) pair still observed (both lists are oldest first).
+  std::vector<TrackFactor>& cached = track_factors_[id];
+  std::vector<TrackFactor> current;
+  current.reserve(track.observations.size() - 1);
+  std::size_t c = 0;
   for (std::size_t k = 1; k < track.observations.size(); ++k) {
     const auto& [frame_id, n] = track.observations[k];
-    terms.push_back({std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information),
-                     {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), inv_depth}});
+    while (c < cached.size() && cached[c].anchor_frame == anchor_id && cached[c].frame < frame_id) ++c;
+    if (c < cached.size() && cached[c].anchor_frame == anchor_id && cached[c].frame == frame_id)
+      current.push_back(std::move(cached[c]));
+    else
+      current.push_back({anchor_id, frame_id,
+                         std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information)});
+    terms->push_back({current.back().factor.get(),
+                      {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), inv_depth}});
   }
-  return terms;
+  cached = std::move(current);
 }
 
 CameraPoseLookup Estimator::CameraPoses() const {
@@ -219,6 +229,7 @@ std::string Estimator::DetectFailure(const Eigen::Vector3d& previous_p_W) const 
 void Estimator::Reset() {
   window_.clear();
   features_.Clear();
+  track_factors_.clear();
   prior_.reset();
   bias_prior_.reset();
   initialized_ = false;

@@ -87,13 +87,15 @@ class Estimator {
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
   void Reset();
-  // One reprojection factor per observation of a usable track after its anchor, with its parameter blocks
-  // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it).
+  // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
+  // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it). The
+  // factors are kept in track_factors_ and stay valid until the next call for the same track.
   struct ReprojectionTerm {
-    std::unique_ptr<ReprojectionFactor> factor;
+    const ReprojectionFactor* factor;
     std::array<double*, 3> blocks;
   };
-  std::vector<ReprojectionTerm> ReprojectionTermsOf(const FeatureTrack& track, double* inv_depth) const;
+  void AppendReprojectionTerms(int id, const FeatureTrack& track, double* inv_depth,
+                               std::vector<ReprojectionTerm>* terms);
   Eigen::Isometry3d T_WC(const Frame& frame) const;
   // T_WC of every window frame by id, as of this call.
   CameraPoseLookup CameraPoses() const;
@@ -115,6 +117,14 @@ class Estimator {
   // that frame is marginalized (its information then moves into prior_). Only MarginalizeOldest and Reset
   // remove the oldest frame, and both drop this prior, so while it exists it belongs to window_.front().
   std::unique_ptr<BiasPriorFactor> bias_prior_;
+  // Each track's reprojection factors, kept across frames (a factor depends only on the anchor observation
+  // and its own, which never change; frame ids are never reused); pruned to the live tracks by Optimize.
+  struct TrackFactor {
+    uint64_t anchor_frame = 0;
+    uint64_t frame = 0;
+    std::unique_ptr<ReprojectionFactor> factor;
+  };
+  std::map<int, std::vector<TrackFactor>> track_factors_;
   ceres::CauchyLoss loss_;
   PoseManifold pose_manifold_;
 

@@ -30,10 +30,10 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
       dropped.insert(&track.inv_depth);
-      for (ReprojectionTerm& term : ReprojectionTermsOf(track, &track.inv_depth)) {
-        terms.push_back({term.factor.get(), &loss_, {term.blocks.begin(), term.blocks.end()}});
-        costs.push_back(std::move(term.factor));
-      }
+      std::vector<ReprojectionTerm> reprojections;
+      AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
+      for (const ReprojectionTerm& term : reprojections)
+        terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
     }
     auto prior = std::make_shared<LinearPrior>();
     if (Marginalize(prior_.get(), terms, dropped, kEigenThreshold, prior.get()))

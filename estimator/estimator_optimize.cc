@@ -62,9 +62,9 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   // one array, copied in and out around the solve, so that their order is the window's and the tracks' and
   // results never depend on heap addresses. Group k + 1 holds the rest of frame k (its pose first: the pose
   // precedes the speed-bias block in Frame).
-  std::vector<FeatureTrack*> tracks;
+  std::vector<std::pair<int, FeatureTrack*>> tracks;
   for (auto& [id, track] : features_.tracks())
-    if (features_.Usable(track)) tracks.push_back(&track);
+    if (features_.Usable(track)) tracks.emplace_back(id, &track);
   std::vector<bool> eliminate_speed_bias(window_.size());
   std::size_t eliminated_size = tracks.size();
   for (std::size_t k = 0; k < window_.size(); ++k) {
@@ -84,7 +84,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     inv_depth[i] = &eliminated[next++];
-    *inv_depth[i] = tracks[i]->inv_depth;
+    *inv_depth[i] = tracks[i].second->inv_depth;
   }
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (std::size_t k = 0; k < window_.size(); ++k) {
@@ -109,13 +109,17 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
                              speed_bias[k]);
     costs.push_back(std::move(factor));
   }
+  std::vector<ReprojectionTerm> reprojections;
   for (std::size_t i = 0; i < tracks.size(); ++i) {
     ordering->AddElementToGroup(inv_depth[i], 0);
-    for (ReprojectionTerm& term : ReprojectionTermsOf(*tracks[i], inv_depth[i])) {
-      problem.AddResidualBlock(term.factor.get(), &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
-      costs.push_back(std::move(term.factor));
-    }
+    AppendReprojectionTerms(tracks[i].first, *tracks[i].second, inv_depth[i], &reprojections);
   }
+  for (const ReprojectionTerm& term : reprojections)
+    problem.AddResidualBlock(const_cast<ReprojectionFactor*>(term.factor), &loss_, term.blocks[0],
+                             term.blocks[1], term.blocks[2]);
+  // Drop the cached factors of tracks that no longer exist (both maps are ordered by id).
+  for (auto it = track_factors_.begin(); it != track_factors_.end();)
+    it = features_.tracks().count(it->first) ? std::next(it) : track_factors_.erase(it);
 
   const NavState oldest_before = window_.front()->State();
 
@@ -142,7 +146,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   ceres::Solve(solver_options, &problem, &summary);
   for (std::size_t k = 0; k < window_.size(); ++k)
     if (eliminate_speed_bias[k]) std::copy_n(speed_bias[k], kSpeedBiasSize, window_[k]->speed_bias);
-  for (std::size_t i = 0; i < tracks.size(); ++i) tracks[i]->inv_depth = *inv_depth[i];
+  for (std::size_t i = 0; i < tracks.size(); ++i) tracks[i].second->inv_depth = *inv_depth[i];
   timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
