@@ -100,11 +100,13 @@ void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eig
   G9.block<3, 3>(kDv, 6) = dt * dacc_dna1;
   G9.block<3, 3>(kDv, 9) = dt * dacc_dng;
 
-  jacobian_.topRows<9>() += N9 * jacobian_;
+  // The first three columns of N9 (d/d delta p) are zero as well.
+  const auto N9r = N9.rightCols<12>();
+  jacobian_.topRows<9>() += N9r * jacobian_.bottomRows<12>();
   Matrix15d M = covariance_;
-  M.topRows<9>() += N9 * covariance_;
+  M.topRows<9>() += N9r * covariance_.bottomRows<12>();
   covariance_ = M;
-  covariance_.leftCols<9>() += M * N9.transpose();
+  covariance_.leftCols<9>() += M.rightCols<12>() * N9r.transpose();
   covariance_.topLeftCorner<9, 9>() += G9 * noise_var_.asDiagonal() * G9.transpose();
   covariance_.block<3, 3>(kBa, kBa).diagonal().array() +=
       noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt;
