@@ -37,48 +37,39 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   const Matrix15d& J = pre_.jacobian();
   const Vector3d dbg = bg_i - pre_.linearized_b_g();
   const Matrix3d dq_dbg = RightJacobian(J.block<3, 3>(kDtheta, kBg) * dbg) * J.block<3, 3>(kDtheta, kBg);
-  // Each block is built unwhitened over the residual rows it reaches and whitened by the matching columns of
-  // the upper-triangular S: rows below the block's first nonzero row stay zero, so fixed-size products over
-  // those rows and columns only replace full 15x15 products (lazy: coefficient-wise, no GEMM set-up).
+  // Each Jacobian block is whitened 3x3 block by 3x3 block: S (upper triangular) times the unwhitened block
+  // is the sum over its nonzero 3x3 blocks (residual rows r) of S's columns r..r+2 times that block.
+  auto S = [&](int residual_row) { return sqrt_information.middleCols<3>(residual_row); };
   using RowMajor15x7 = Eigen::Matrix<double, 15, 7, Eigen::RowMajor>;
   using RowMajor15x9 = Eigen::Matrix<double, 15, 9, Eigen::RowMajor>;
-  if (jacobians[0] != nullptr) {  // rows dp, dtheta, dv
-    Eigen::Matrix<double, 9, 6> d = Eigen::Matrix<double, 9, 6>::Zero();
-    d.block<3, 3>(kDp, 0) = -Ri_T;
-    d.block<3, 3>(kDp, 3) = Skew(Ri_T * dp_W);
-    d.block<3, 3>(kDtheta, 3) = -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>();
-    d.block<3, 3>(kDv, 3) = Skew(Ri_T * dv_W);
+  if (jacobians[0] != nullptr) {  // pose_i: [delta p, delta theta]
     Eigen::Map<RowMajor15x7> jac(jacobians[0]);
-    jac.leftCols<6>().noalias() = sqrt_information.leftCols<9>().lazyProduct(d);
+    jac.leftCols<3>() = S(kDp) * -Ri_T;
+    jac.middleCols<3>(3) =
+        S(kDp) * Skew(Ri_T * dp_W) +
+        S(kDtheta) * -(QuatLeft(gamma.conjugate()) * QuatRight(q_ij)).bottomRightCorner<3, 3>() +
+        S(kDv) * Skew(Ri_T * dv_W);
     jac.col(6).setZero();
   }
-  if (jacobians[1] != nullptr) {  // all rows
-    Eigen::Matrix<double, 15, 9> d = Eigen::Matrix<double, 15, 9>::Zero();
-    d.block<3, 3>(kDp, 0) = -Ri_T * T;
-    d.block<3, 3>(kDp, 3) = -J.block<3, 3>(kDp, kBa);
-    d.block<3, 3>(kDp, 6) = -J.block<3, 3>(kDp, kBg);
-    d.block<3, 3>(kDtheta, 6) = -QuatRight(err).bottomRightCorner<3, 3>() * dq_dbg;
-    d.block<3, 3>(kDv, 0) = -Ri_T;
-    d.block<3, 3>(kDv, 3) = -J.block<3, 3>(kDv, kBa);
-    d.block<3, 3>(kDv, 6) = -J.block<3, 3>(kDv, kBg);
-    d.block<3, 3>(kBa, 3) = -Matrix3d::Identity();
-    d.block<3, 3>(kBg, 6) = -Matrix3d::Identity();
-    Eigen::Map<RowMajor15x9>(jacobians[1]).noalias() = sqrt_information.lazyProduct(d);
+  if (jacobians[1] != nullptr) {  // speed_bias_i: [v, b_a, b_g]
+    Eigen::Map<RowMajor15x9> jac(jacobians[1]);
+    jac.leftCols<3>() = S(kDp) * (-T * Ri_T) + S(kDv) * -Ri_T;
+    jac.middleCols<3>(3) = S(kDp) * -J.block<3, 3>(kDp, kBa) + S(kDv) * -J.block<3, 3>(kDv, kBa) - S(kBa);
+    jac.rightCols<3>() = S(kDp) * -J.block<3, 3>(kDp, kBg) +
+                         S(kDtheta) * -(QuatRight(err).bottomRightCorner<3, 3>() * dq_dbg) +
+                         S(kDv) * -J.block<3, 3>(kDv, kBg) - S(kBg);
   }
-  if (jacobians[2] != nullptr) {  // rows dp, dtheta
-    Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
-    d.block<3, 3>(kDp, 0) = Ri_T;
-    d.block<3, 3>(kDtheta, 3) = QuatLeft(err).bottomRightCorner<3, 3>();
+  if (jacobians[2] != nullptr) {  // pose_j
     Eigen::Map<RowMajor15x7> jac(jacobians[2]);
-    jac.leftCols<6>().noalias() = sqrt_information.leftCols<6>().lazyProduct(d);
+    jac.leftCols<3>() = S(kDp) * Ri_T;
+    jac.middleCols<3>(3) = S(kDtheta) * QuatLeft(err).bottomRightCorner<3, 3>();
     jac.col(6).setZero();
   }
-  if (jacobians[3] != nullptr) {  // rows dv, b_a, b_g
-    Eigen::Matrix<double, 9, 9> d = Eigen::Matrix<double, 9, 9>::Zero();
-    d.block<3, 3>(0, 0) = Ri_T;
-    d.block<3, 3>(3, 3) = Matrix3d::Identity();
-    d.block<3, 3>(6, 6) = Matrix3d::Identity();
-    Eigen::Map<RowMajor15x9>(jacobians[3]).noalias() = sqrt_information.rightCols<9>().lazyProduct(d);
+  if (jacobians[3] != nullptr) {  // speed_bias_j
+    Eigen::Map<RowMajor15x9> jac(jacobians[3]);
+    jac.leftCols<3>() = S(kDv) * Ri_T;
+    jac.middleCols<3>(3) = S(kBa);
+    jac.rightCols<3>() = S(kBg);
   }
   return true;
 }
