@@ -1,5 +1,6 @@
 // The window's nonlinear least-squares problem and its Ceres solve.
 #include <algorithm>
+#include <cassert>
 #include <memory>
 #include <vector>
 
@@ -35,6 +36,32 @@ class StopAfterAcceptedSteps : public ceres::IterationCallback {
   int accepted_ = 0;
 };
 
+// Copies of parameter blocks in one array, in the order they are added, written back by CopyBack(). Ceres
+// orders the blocks of an elimination group by address, so for copies that order is the order of Add().
+class ContiguousCopies {
+ public:
+  explicit ContiguousCopies(std::size_t total_size) { storage_.reserve(total_size); }
+  double* Add(double* block, int size) {
+    assert(storage_.size() + size <= storage_.capacity());  // the copies never move
+    double* copy = storage_.data() + storage_.size();
+    storage_.insert(storage_.end(), block, block + size);
+    copies_.push_back({block, copy, size});
+    return copy;
+  }
+  void CopyBack() const {
+    for (const Copy& c : copies_) std::copy_n(c.copy, c.size, c.original);
+  }
+
+ private:
+  struct Copy {
+    double* original;
+    const double* copy;
+    int size;
+  };
+  std::vector<double> storage_;
+  std::vector<Copy> copies_;
+};
+
 }  // namespace
 
 bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
@@ -58,10 +85,10 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   // Ceres eliminates the first group of the ordering (DENSE_SCHUR's Schur complement) and orders the blocks
   // of a group by address. Group 0 holds every inverse depth and the speed-bias blocks of alternate frames
   // outside the prior: an independent set, since a speed-bias block couples only to its neighbours' states
-  // (eliminating them keeps the reduced camera matrix about a quarter smaller). Those blocks are solved in
-  // one array, copied in and out around the solve, so that their order is the window's and the tracks' and
-  // results never depend on heap addresses. Group k + 1 holds the rest of frame k (its pose first: the pose
-  // precedes the speed-bias block in Frame).
+  // (eliminating them keeps the reduced camera matrix about a quarter smaller). Those blocks are solved as
+  // ContiguousCopies, so that their order is the window's and the tracks' and results never depend on heap
+  // addresses. Group k + 1 holds the rest of frame k (its pose first: the pose precedes the speed-bias block
+  // in Frame).
   std::vector<std::pair<int, FeatureTrack*>> tracks;
   for (auto& [id, track] : features_.tracks())
     if (features_.Usable(track)) tracks.emplace_back(id, &track);
@@ -72,20 +99,12 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
         (k == 0 || !eliminate_speed_bias[k - 1]) && !(prior_ && prior_->Involves(window_[k]->speed_bias));
     if (eliminate_speed_bias[k]) eliminated_size += kSpeedBiasSize;
   }
-  std::vector<double> eliminated(eliminated_size);
-  std::vector<double*> speed_bias(window_.size()), inv_depth(tracks.size());
-  std::size_t next = 0;
-  for (std::size_t k = 0; k < window_.size(); ++k) {
-    speed_bias[k] = window_[k]->speed_bias;
-    if (!eliminate_speed_bias[k]) continue;
-    speed_bias[k] = &eliminated[next];
-    std::copy_n(window_[k]->speed_bias, kSpeedBiasSize, speed_bias[k]);
-    next += kSpeedBiasSize;
-  }
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    inv_depth[i] = &eliminated[next++];
-    *inv_depth[i] = tracks[i].second->inv_depth;
-  }
+  ContiguousCopies eliminated(eliminated_size);
+  std::vector<double*> speed_bias, inv_depth;
+  for (std::size_t k = 0; k < window_.size(); ++k)
+    speed_bias.push_back(eliminate_speed_bias[k] ? eliminated.Add(window_[k]->speed_bias, kSpeedBiasSize)
+                                                 : window_[k]->speed_bias);
+  for (const auto& [id, track] : tracks) inv_depth.push_back(eliminated.Add(&track->inv_depth, 1));
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (std::size_t k = 0; k < window_.size(); ++k) {
     problem.AddParameterBlock(window_[k]->pose, kPoseSize, &pose_manifold_);
@@ -144,9 +163,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   if (options_.solver.accepted_steps > 0) solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
-  for (std::size_t k = 0; k < window_.size(); ++k)
-    if (eliminate_speed_bias[k]) std::copy_n(speed_bias[k], kSpeedBiasSize, window_[k]->speed_bias);
-  for (std::size_t i = 0; i < tracks.size(); ++i) tracks[i].second->inv_depth = *inv_depth[i];
+  eliminated.CopyBack();
   timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
