@@ -88,8 +88,8 @@ void Estimator::AppendReprojectionTerms(int id, const FeatureTrack& track, doubl
     if (c < cached.size() && cached[c].anchor_frame == anchor_id && cached[c].frame == frame_id)
       current.push_back(std::move(cached[c]));
     else
-      current.push_back({anchor_id, frame_id,
-                         std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information)});
+      current.push_back(
+          {anchor_id, frame_id, std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information)});
     terms->push_back({current.back().factor.get(),
                       {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), inv_depth}});
   }

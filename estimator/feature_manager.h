@@ -3,7 +3,8 @@
 // A track holds the normalized observations (x/z, y/z in C) of one feature id in the window frames that saw
 // it, oldest first; the first observation anchors it, and its depth is the inverse depth `inv_depth` along
 // the anchor's ray (a window solve works on a copy of it; marginalization uses its address, stable since
-// tracks live in a std::map). Frames are named by a unique id (never reused), so sliding the window renumbers nothing.
+// tracks live in a std::map). Frames are named by a unique id (never reused), so sliding the window renumbers
+// nothing.
 #pragma once
 
 #include <cstdint>

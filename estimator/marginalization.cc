@@ -67,7 +67,8 @@ template <int N>
 Eigen::MatrixXd PseudoInverse(const Eigen::MatrixXd& A, double threshold) {
   using Matrix = Eigen::Matrix<double, N, N>;
   const Eigen::SelfAdjointEigenSolver<Matrix> es{Matrix(A)};
-  const auto inv = (es.eigenvalues().array() > threshold).select(es.eigenvalues().array().inverse(), 0.0).eval();
+  const auto inv =
+      (es.eigenvalues().array() > threshold).select(es.eigenvalues().array().inverse(), 0.0).eval();
   return es.eigenvectors() * inv.matrix().asDiagonal() * es.eigenvectors().transpose();
 }
 
@@ -101,6 +102,20 @@ struct NormalEquations {
     h = Eigen::VectorXd::Zero(scalars);
     bs = Eigen::VectorXd::Zero(scalars);
     reach.assign(scalars, {});
+  }
+  // Adds a term's J^T J and J^T r, whose columns are those of `indices` (into `columns`) in that order.
+  void AddTerm(const std::vector<Column>& columns, const std::vector<int>& indices,
+               const Eigen::MatrixXd& JtJ, const Eigen::VectorXd& Jtr) {
+    for (std::size_t k = 0, ck = 0; k < indices.size(); ++k) {
+      const Column& a = columns[indices[k]];
+      AddGradient(a, Jtr, static_cast<int>(ck));
+      for (std::size_t l = 0, cl = 0; l < indices.size(); ++l) {
+        const Column& c = columns[indices[l]];
+        Add(a, c, indices[l], JtJ, static_cast<int>(ck), static_cast<int>(cl));
+        cl += c.tangent;
+      }
+      ck += a.tangent;
+    }
   }
   // Adds the block (k, l) of a term's J^T J whose columns start at ck, cl (l is the column l_index).
   void Add(const Column& k, const Column& l, int l_index, const Eigen::MatrixXd& JtJ, int ck, int cl) {
@@ -142,6 +157,44 @@ struct NormalEquations {
     }
   }
 };
+
+// The kept blocks' Schur complement A, bk in square-root and information form (J, r, H, g of `prior`):
+// Cholesky of A with a ridge of `eigen_threshold` (an information of 1e-8 is no constraint at all but makes
+// the unobservable gauge directions factorizable), J_p = L^T, r_p = L^-1 bk. Falls back to the
+// eigen-decomposition (eigenvalues below the threshold dropped) if A is not positive semi-definite enough for
+// that. False when nothing is left.
+bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double eigen_threshold,
+                    LinearPrior* prior) {
+  const int n = static_cast<int>(A.rows());
+  Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
+  A_sym.diagonal().array() += eigen_threshold;
+  Eigen::LLT<Eigen::MatrixXd> llt(A_sym);
+  if (llt.info() == Eigen::Success) {
+    prior->J = llt.matrixU();
+    prior->r = llt.matrixL().solve(bk);
+    prior->H = std::move(A_sym);
+    prior->g = bk;
+  } else {
+    A_sym.diagonal().array() -= eigen_threshold;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A_sym);
+    const Eigen::VectorXd& S = es.eigenvalues();
+    std::vector<int> keep;
+    for (int i = 0; i < n; ++i)
+      if (S[i] > eigen_threshold) keep.push_back(i);
+    if (keep.empty()) return false;
+    prior->J.resize(static_cast<int>(keep.size()), n);
+    prior->r.resize(static_cast<int>(keep.size()));
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+      const int i = keep[k];
+      const double s = std::sqrt(S[i]);
+      prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
+      prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
+    }
+    prior->H = prior->J.transpose() * prior->J;
+    prior->g = prior->J.transpose() * prior->r;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -215,17 +268,9 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       }
       c += previous->blocks[k].tangent;
     }
-    for (std::size_t k = 0, ck = 0; k < previous->blocks.size(); ++k) {
-      const Column& col_k = columns[index_of.at(previous->blocks[k].address)];
-      eq.AddGradient(col_k, g, static_cast<int>(ck));
-      for (std::size_t l = 0, cl = 0; l < previous->blocks.size(); ++l) {
-        const int l_index = index_of.at(previous->blocks[l].address);
-        const Column& col_l = columns[l_index];
-        eq.Add(col_k, col_l, l_index, H, static_cast<int>(ck), static_cast<int>(cl));
-        cl += col_l.tangent;
-      }
-      ck += col_k.tangent;
-    }
+    std::vector<int> indices;
+    for (const LinearPrior::Block& b : previous->blocks) indices.push_back(index_of.at(b.address));
+    eq.AddTerm(columns, indices, H, g);
   }
 
   Eigen::VectorXd r;
@@ -254,7 +299,8 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
       const int tangent = columns[term_columns[t][k]].tangent;
       using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-      J.middleCols(c, tangent) = Eigen::Map<const RowMajor>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
+      J.middleCols(c, tangent) =
+          Eigen::Map<const RowMajor>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
     Robustify(term.loss, &r, &J);
@@ -264,16 +310,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     else
       JtJ.noalias() = J.transpose() * J;
     Jtr.noalias() = J.transpose() * r;
-    for (std::size_t k = 0, ck = 0; k < term.blocks.size(); ++k) {
-      const Column& col_k = columns[term_columns[t][k]];
-      eq.AddGradient(col_k, Jtr, static_cast<int>(ck));
-      for (std::size_t l = 0, cl = 0; l < term.blocks.size(); ++l) {
-        const Column& col_l = columns[term_columns[t][l]];
-        eq.Add(col_k, col_l, term_columns[t][l], JtJ, static_cast<int>(ck), static_cast<int>(cl));
-        cl += col_l.tangent;
-      }
-      ck += col_k.tangent;
-    }
+    eq.AddTerm(columns, term_columns[t], JtJ, Jtr);
   }
   if (!eq.AllFinite()) return false;
 
@@ -285,44 +322,15 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   if (m > 0) {
     const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
     // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
-    const Eigen::MatrixXd Hmm_inv = m == kPoseTangentSize + kSpeedBiasSize
-                                        ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
-                                        : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
+    const Eigen::MatrixXd Hmm_inv =
+        m == kPoseTangentSize + kSpeedBiasSize
+            ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
+            : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
     const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
     A.noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
     bk.noalias() -= Hkm_Hmm_inv * eq.b.head(m);
   }
-  // Square-root form of the kept block: Cholesky of A with a ridge of `eigen_threshold` (an information of
-  // 1e-8 is no constraint at all but makes the unobservable gauge directions factorizable), J_p = L^T,
-  // r_p = L^-1 b. Falls back to the eigen-decomposition (eigenvalues below the threshold dropped) if A is not
-  // positive semi-definite enough for that.
-  Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
-  A_sym.diagonal().array() += eigen_threshold;
-  Eigen::LLT<Eigen::MatrixXd> llt(A_sym);
-  if (llt.info() == Eigen::Success) {
-    prior->J = llt.matrixU();
-    prior->r = llt.matrixL().solve(bk);
-    prior->H = std::move(A_sym);
-    prior->g = bk;
-  } else {
-    A_sym.diagonal().array() -= eigen_threshold;
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(A_sym);
-    const Eigen::VectorXd& S = es.eigenvalues();
-    std::vector<int> keep;
-    for (int i = 0; i < n; ++i)
-      if (S[i] > eigen_threshold) keep.push_back(i);
-    if (keep.empty()) return false;
-    prior->J.resize(static_cast<int>(keep.size()), n);
-    prior->r.resize(static_cast<int>(keep.size()));
-    for (std::size_t k = 0; k < keep.size(); ++k) {
-      const int i = keep[k];
-      const double s = std::sqrt(S[i]);
-      prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
-      prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
-    }
-    prior->H = prior->J.transpose() * prior->J;
-    prior->g = prior->J.transpose() * prior->r;
-  }
+  if (!SquareRootForm(A, bk, eigen_threshold, prior)) return false;
   prior->blocks.clear();
   for (const Column& c : columns) {
     if (c.dropped) continue;

@@ -4,8 +4,8 @@
 // applied as Ceres' corrector does), adds the previous prior at the current values, forms H = J^T J and
 // b = J^T r over all involved blocks (tangent space), eliminates the dropped ones with the Schur complement
 // and stores the result in square-root form J_p, r_p with J_p^T J_p = S (+ a ridge of `eigen_threshold`) and
-// J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces the Schur complement S and its gradient b_S for the
-// kept blocks. J_p is the Cholesky factor of S (VINS-Mono stores sqrt(eigenvalues) V^T instead: the same
+// J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces the Schur complement S and its gradient b_S for
+// the kept blocks. J_p is the Cholesky factor of S (VINS-Mono stores sqrt(eigenvalues) V^T instead: the same
 // quadratic, at a fraction of the cost). MarginalizationFactor evaluates r_p + J_p dx with dx = x - x0 in the
 // tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept blocks at their current addresses.
 //

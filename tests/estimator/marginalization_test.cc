@@ -62,7 +62,8 @@ void DirectSchur(const std::vector<MarginalizationTerm>& terms, const std::vecto
   int m = 0, n = 0;
   std::map<const double*, int> size_of;
   for (const MarginalizationTerm& t : terms)
-    for (std::size_t k = 0; k < t.blocks.size(); ++k) size_of[t.blocks[k]] = t.cost->parameter_block_sizes()[k];
+    for (std::size_t k = 0; k < t.blocks.size(); ++k)
+      size_of[t.blocks[k]] = t.cost->parameter_block_sizes()[k];
   for (double* b : dropped) {
     column[b] = m;
     m += Tangent(size_of.at(b));
@@ -182,8 +183,8 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
     const Eigen::Vector2d e(noise * std::cos(3.0 * i), noise * std::sin(5.0 * i));
     const ceres::LossFunction* l = i % 2 == 0 ? &loss : nullptr;
     for (std::vector<double>* seen : {&pose_b, &pose_c}) {
-      factors.push_back(std::make_unique<ReprojectionFactor>(Observe(pose_a, l_W), Observe(*seen, l_W) + e, T_BC,
-                                                             300.0));
+      factors.push_back(
+          std::make_unique<ReprojectionFactor>(Observe(pose_a, l_W), Observe(*seen, l_W) + e, T_BC, 300.0));
       terms_a.push_back({factors.back().get(), l, {pose_a.data(), seen->data(), depths_a[i].data()}});
     }
     factors.push_back(
@@ -203,12 +204,12 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
   // Move the kept blocks away from the prior's linearization point, rotations included.
   PoseManifold manifold;
   std::vector<double> moved(kPoseSize);
-  const Eigen::Matrix<double, 6, 1> db = (Eigen::Matrix<double, 6, 1>() << 0.02, -0.01, 0.03, 0.05, -0.04, 0.1)
-                                             .finished();
+  const Eigen::Matrix<double, 6, 1> db =
+      (Eigen::Matrix<double, 6, 1>() << 0.02, -0.01, 0.03, 0.05, -0.04, 0.1).finished();
   manifold.Plus(pose_b.data(), db.data(), moved.data());
   pose_b = moved;
-  const Eigen::Matrix<double, 6, 1> dc = (Eigen::Matrix<double, 6, 1>() << -0.03, 0.02, 0.01, -0.08, 0.03, 0.06)
-                                             .finished();
+  const Eigen::Matrix<double, 6, 1> dc =
+      (Eigen::Matrix<double, 6, 1>() << -0.03, 0.02, 0.01, -0.08, 0.03, 0.06).finished();
   manifold.Plus(pose_c.data(), dc.data(), moved.data());
   pose_c = moved;
 
