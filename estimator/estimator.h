@@ -89,7 +89,7 @@ class Estimator {
   void Reset();
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it). The
-  // factors are kept in track_factors_ and stay valid until the next call for the same track.
+  // factors are owned by track_factors_: one lives while the track keeps its anchor and that observation.
   struct ReprojectionTerm {
     const ReprojectionFactor* factor;
     std::array<double*, 3> blocks;

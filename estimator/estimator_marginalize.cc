@@ -27,14 +27,14 @@ void Estimator::MarginalizeOldest(bool with_prior) {
           {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
       costs.push_back(std::move(factor));
     }
+    std::vector<ReprojectionTerm> reprojections;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
       dropped.insert(&track.inv_depth);
-      std::vector<ReprojectionTerm> reprojections;
       AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
-      for (const ReprojectionTerm& term : reprojections)
-        terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
     }
+    for (const ReprojectionTerm& term : reprojections)
+      terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
     auto prior = std::make_shared<LinearPrior>();
     if (Marginalize(prior_.get(), terms, dropped, kEigenThreshold, prior.get()))
       prior_ = std::move(prior);
