@@ -130,9 +130,10 @@ struct SolverOptions {
   // (the solve shrinks the trust region and tries again), and the solve goes on to max_iterations while the
   // window's cost exceeds its expectation under the noise model (half the number of residuals: a glitch burst
   // in the IMU factors, a re-initialization on bad data), so hard frames still converge. Measured when it was
-  // introduced (before the initial bias prior), configs/paper.yaml, seeds 1-5 (groundtruth init): ATE 0.0443 / 0.0596 / 0.0283 / 0.0420 / 0.0343 m with 1
-  // against 0.0469 / 0.0611 / 0.0292 / 0.0422 / 0.0360 m with 0; optimization time -40 %; N(50,10) glitches
-  // without a detector degrade it the same way (mean 0.483 m against 0.480 m).
+  // introduced (before the initial bias prior), configs/paper.yaml, seeds 1-5 (groundtruth init): ATE
+  // 0.0443 / 0.0596 / 0.0283 / 0.0420 / 0.0343 m with 1 against 0.0469 / 0.0611 / 0.0292 / 0.0422 / 0.0360 m
+  // with 0; optimization time -40 %; N(50,10) glitches without a detector degrade it the same way (mean
+  // 0.483 m against 0.480 m).
   int accepted_steps = 1;
   // A solve stops when an iteration changes the cost by less than this fraction. Every frame's solve starts
   // from the previous solution, so after the first one or two steps the remaining ones change the cost by
