@@ -149,7 +149,11 @@ struct NormalEquations {
         b.segment(a.column, a.tangent) -= f * bs[s];
         for (const int j : reach[s]) {
           const Column& c = columns[j];
-          if (a.column <= c.column)
+          if (a.column > c.column) continue;
+          if (a.tangent == kPoseTangentSize && c.tangent == kPoseTangentSize)  // pose x pose: fixed size
+            H.block<kPoseTangentSize, kPoseTangentSize>(a.column, c.column).noalias() -=
+                f.head<kPoseTangentSize>() * Hs.row(s).segment<kPoseTangentSize>(c.column);
+          else
             H.block(a.column, c.column, a.tangent, c.tangent).noalias() -=
                 f * Hs.row(s).segment(c.column, c.tangent);
         }
