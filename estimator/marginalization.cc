@@ -126,7 +126,11 @@ struct NormalEquations {
       std::vector<int>& r = reach[k.scalar];
       if (std::find(r.begin(), r.end(), l_index) == r.end()) r.push_back(l_index);
     } else if (l.scalar < 0 && k.column <= l.column) {
-      H.block(k.column, l.column, k.tangent, l.tangent) += JtJ.block(ck, cl, k.tangent, l.tangent);
+      if (k.tangent == kPoseTangentSize && l.tangent == kPoseTangentSize)  // pose x pose: fixed size
+        H.block<kPoseTangentSize, kPoseTangentSize>(k.column, l.column) +=
+            JtJ.block<kPoseTangentSize, kPoseTangentSize>(ck, cl);
+      else
+        H.block(k.column, l.column, k.tangent, l.tangent) += JtJ.block(ck, cl, k.tangent, l.tangent);
     }
   }
   void AddGradient(const Column& k, const Eigen::VectorXd& Jtr, int ck) {
