@@ -91,7 +91,7 @@ class Estimator {
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it). The
   // factors are owned by track_factors_: one lives while the track keeps its anchor and that observation.
   struct ReprojectionTerm {
-    const ReprojectionFactor* factor;
+    ReprojectionFactor* factor;
     std::array<double*, 3> blocks;
   };
   void AppendReprojectionTerms(int id, const FeatureTrack& track, double* inv_depth,

@@ -134,9 +134,8 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
     AppendReprojectionTerms(tracks[i].first, *tracks[i].second, inv_depth[i], &reprojections);
   }
   for (const ReprojectionTerm& term : reprojections)
-    problem.AddResidualBlock(const_cast<ReprojectionFactor*>(term.factor), &loss_, term.blocks[0],
-                             term.blocks[1], term.blocks[2]);
-  // Drop the cached factors of tracks that no longer exist (both maps are ordered by id).
+    problem.AddResidualBlock(term.factor, &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
+  // Drop the cached factors of tracks that no longer exist.
   for (auto it = track_factors_.begin(); it != track_factors_.end();)
     it = features_.tracks().count(it->first) ? std::next(it) : track_factors_.erase(it);
 
