@@ -4,14 +4,6 @@
 
 namespace vigil {
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0.0, -v.z(), v.y(),  //
-      v.z(), 0.0, -v.x(),   //
-      -v.y(), v.x(), 0.0;
-  return m;
-}
-
 Eigen::Quaterniond ExpQ(const Eigen::Vector3d& phi) {
   const double theta = phi.norm();
   const double half = 0.5 * theta;

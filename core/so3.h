@@ -7,8 +7,14 @@
 
 namespace vigil {
 
-// [v]x, so that Skew(a) * b = a.cross(b).
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v);
+// [v]x, so that Skew(a) * b = a.cross(b). Inline: the factors call it per residual evaluation.
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(),  //
+      v.z(), 0.0, -v.x(),   //
+      -v.y(), v.x(), 0.0;
+  return m;
+}
 // Exponential map: unit quaternion of the rotation by |phi| about phi / |phi| (accurate for small phi).
 Eigen::Quaterniond ExpQ(const Eigen::Vector3d& phi);
 // Logarithm: rotation vector of a unit quaternion, angle in [0, pi].
