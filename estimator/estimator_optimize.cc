@@ -116,9 +116,10 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   if (!prior_) {
     problem.SetParameterBlockConstant(window_.front()->pose);
   } else {
-    auto factor = std::make_unique<MarginalizationFactor>(prior_);
-    problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
-    costs.push_back(std::move(factor));
+    for (auto& factor : PriorFactors(prior_)) {
+      problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
+      costs.push_back(std::move(factor));
+    }
   }
   // A bias-only prior: it does not fix the gauge, so it is independent of the branch above.
   if (bias_prior_) problem.AddResidualBlock(bias_prior_.get(), nullptr, speed_bias.front());

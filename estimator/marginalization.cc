@@ -6,6 +6,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include "core/so3.h"
 #include "estimator/pose_manifold.h"
@@ -41,18 +42,21 @@ struct PriorOffset {
   std::vector<Eigen::Matrix3d> Jr_inv;  // per block; used for pose blocks only
 };
 
-PriorOffset OffsetOf(const LinearPrior& prior, double const* const* values) {
+// Over the blocks from `first_block` on; values[k] is block first_block + k.
+PriorOffset OffsetOf(const LinearPrior& prior, int first_block, double const* const* values) {
   PriorOffset o;
-  o.dx.resize(prior.J.cols());
-  o.Jr_inv.resize(prior.blocks.size());
-  for (std::size_t k = 0, c = 0; k < prior.blocks.size(); ++k) {
+  int columns = 0;
+  for (std::size_t k = first_block; k < prior.blocks.size(); ++k) columns += prior.blocks[k].tangent;
+  o.dx.resize(columns);
+  o.Jr_inv.resize(prior.blocks.size() - first_block);
+  for (std::size_t k = first_block, c = 0; k < prior.blocks.size(); ++k) {
     const LinearPrior::Block& b = prior.blocks[k];
-    const double* x = values[k];
+    const double* x = values[k - first_block];
     if (b.size == kPoseSize) {
       o.dx.segment<3>(c) = PoseP(x) - PoseP(b.x0.data());
       const Eigen::Vector3d phi = LogQ(PoseQ(b.x0.data()).conjugate() * PoseQ(x));
       o.dx.segment<3>(c + 3) = phi;
-      o.Jr_inv[k] = RightJacobianInverse(phi);
+      o.Jr_inv[k - first_block] = RightJacobianInverse(phi);
     } else {
       for (int i = 0; i < b.size; ++i) o.dx[c + i] = x[i] - b.x0[i];
     }
@@ -190,14 +194,18 @@ bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double 
     for (int i = 0; i < n; ++i)
       if (S[i] > eigen_threshold) keep.push_back(i);
     if (keep.empty()) return false;
-    prior->J.resize(static_cast<int>(keep.size()), n);
-    prior->r.resize(static_cast<int>(keep.size()));
+    Eigen::MatrixXd J(static_cast<int>(keep.size()), n);
+    Eigen::VectorXd r(static_cast<int>(keep.size()));
     for (std::size_t k = 0; k < keep.size(); ++k) {
       const int i = keep[k];
       const double s = std::sqrt(S[i]);
-      prior->J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
-      prior->r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
+      J.row(static_cast<int>(k)) = s * es.eigenvectors().col(i).transpose();
+      r[static_cast<int>(k)] = es.eigenvectors().col(i).dot(bk) / s;
     }
+    // J = Q R: |r + J dx| = |Q^T r + R dx| with R upper trapezoidal, as LinearPrior::J must be.
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(J);
+    prior->J = qr.matrixQR().triangularView<Eigen::Upper>();
+    prior->r = qr.householderQ().transpose() * r;
     prior->H = prior->J.transpose() * prior->J;
     prior->g = prior->J.transpose() * prior->r;
   }
@@ -265,7 +273,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     // J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
     std::vector<const double*> values;
     for (const LinearPrior::Block& b : previous->blocks) values.push_back(b.address);
-    const PriorOffset o = OffsetOf(*previous, values.data());
+    const PriorOffset o = OffsetOf(*previous, 0, values.data());
     Eigen::MatrixXd H = previous->H;
     Eigen::VectorXd g = previous->g + previous->H * o.dx;
     for (std::size_t k = 0, c = 0; k < previous->blocks.size(); ++k) {
@@ -353,39 +361,59 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
 }
 
 MarginalizationFactor::MarginalizationFactor(std::shared_ptr<const LinearPrior> prior)
-    : prior_(std::move(prior)) {
-  set_num_residuals(static_cast<int>(prior_->r.size()));
-  for (const LinearPrior::Block& b : prior_->blocks) mutable_parameter_block_sizes()->push_back(b.size);
+    : MarginalizationFactor(prior, 0, 0, static_cast<int>(prior->r.size())) {}
+
+MarginalizationFactor::MarginalizationFactor(std::shared_ptr<const LinearPrior> prior, int first_block,
+                                             int row_begin, int row_end)
+    : prior_(std::move(prior)), first_block_(first_block), row_begin_(row_begin) {
+  set_num_residuals(row_end - row_begin);
+  for (int k = 0; k < first_block; ++k) first_column_ += prior_->blocks[k].tangent;
+  for (std::size_t k = first_block; k < prior_->blocks.size(); ++k)
+    mutable_parameter_block_sizes()->push_back(prior_->blocks[k].size);
 }
 
 std::vector<double*> MarginalizationFactor::parameter_blocks() const {
   std::vector<double*> out;
-  for (const LinearPrior::Block& b : prior_->blocks) out.push_back(b.address);
+  for (std::size_t k = first_block_; k < prior_->blocks.size(); ++k) out.push_back(prior_->blocks[k].address);
   return out;
 }
 
 bool MarginalizationFactor::Evaluate(double const* const* parameters, double* residuals,
                                      double** jacobians) const {
-  const int rows = static_cast<int>(prior_->r.size());
-  const PriorOffset o = OffsetOf(*prior_, parameters);
-  Eigen::Map<Eigen::VectorXd>(residuals, rows).noalias() = prior_->r + prior_->J * o.dx;
+  const int rows = num_residuals();
+  const PriorOffset o = OffsetOf(*prior_, first_block_, parameters);
+  const auto J = prior_->J.block(row_begin_, first_column_, rows, o.dx.size());
+  Eigen::Map<Eigen::VectorXd>(residuals, rows).noalias() = prior_->r.segment(row_begin_, rows) + J * o.dx;
   if (jacobians == nullptr) return true;
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  for (std::size_t k = 0, c = 0; k < prior_->blocks.size(); ++k) {
-    const LinearPrior::Block& b = prior_->blocks[k];
+  for (std::size_t k = 0, c = 0; k + first_block_ < prior_->blocks.size(); ++k) {
+    const LinearPrior::Block& b = prior_->blocks[k + first_block_];
     if (jacobians[k] != nullptr) {
       Eigen::Map<RowMajor> jac(jacobians[k], rows, b.size);
       if (b.size == kPoseSize) {
-        jac.leftCols<3>() = prior_->J.middleCols<3>(c);
-        jac.middleCols<3>(3).noalias() = prior_->J.middleCols<3>(c + 3) * o.Jr_inv[k];
+        jac.leftCols<3>() = J.middleCols<3>(c);
+        jac.middleCols<3>(3).noalias() = J.middleCols<3>(c + 3) * o.Jr_inv[k];
         jac.col(6).setZero();
       } else {
-        jac = prior_->J.middleCols(c, b.size);
+        jac = J.middleCols(c, b.size);
       }
     }
     c += b.tangent;
   }
   return true;
+}
+
+std::vector<std::unique_ptr<MarginalizationFactor>> PriorFactors(
+    const std::shared_ptr<const LinearPrior>& prior) {
+  std::vector<std::unique_ptr<MarginalizationFactor>> factors;
+  const int rows = static_cast<int>(prior->r.size());
+  for (std::size_t k = 0, c = 0; k < prior->blocks.size() && static_cast<int>(c) < rows; ++k) {
+    const int end = std::min(rows, static_cast<int>(c) + prior->blocks[k].tangent);
+    factors.push_back(
+        std::make_unique<MarginalizationFactor>(prior, static_cast<int>(k), static_cast<int>(c), end));
+    c += prior->blocks[k].tangent;
+  }
+  return factors;
 }
 
 }  // namespace vigil::estimator

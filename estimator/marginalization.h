@@ -6,8 +6,10 @@
 // and stores the result in square-root form J_p, r_p with J_p^T J_p = S (+ a ridge of `eigen_threshold`) and
 // J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces the Schur complement S and its gradient b_S for
 // the kept blocks. J_p is the Cholesky factor of S (VINS-Mono stores sqrt(eigenvalues) V^T instead: the same
-// quadratic, at a fraction of the cost). MarginalizationFactor evaluates r_p + J_p dx with dx = x - x0 in the
-// tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept blocks at their current addresses.
+// quadratic, at a fraction of the cost), so it is upper triangular. MarginalizationFactor evaluates rows of
+// r_p + J_p dx with dx = x - x0 in the tangent space (poses: [p - p0, Log(q0^-1 q)]), with the kept blocks at
+// their current addresses; PriorFactors() splits the prior by its triangle into one factor per block, which
+// halves what the solver evaluates and multiplies out.
 //
 // Elimination: dropped 1-D blocks that share no residual block with another dropped 1-D block (feature
 // inverse depths: each feature's factors touch only its own depth) are eliminated one scalar pivot at a time
@@ -42,7 +44,9 @@ struct LinearPrior {
     std::vector<double> x0;
   };
   std::vector<Block> blocks;
-  Eigen::MatrixXd J;  // rows x sum of tangent sizes
+  // rows x sum of tangent sizes, rows <= columns, upper trapezoidal (zero below the diagonal): row i involves
+  // the columns from i on only.
+  Eigen::MatrixXd J;
   Eigen::VectorXd r;
   // The same quadratic in information form at x0, H = J^T J and g = J^T r: the next marginalization adds
   // these instead of multiplying out J.
@@ -57,14 +61,26 @@ struct LinearPrior {
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                  const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior);
 
+// Rows [row_begin, row_end) of a prior's r + J dx over its blocks from `first_block` on (J must be zero in
+// those rows left of that block's columns); by default all of it.
 class MarginalizationFactor : public ceres::CostFunction {
  public:
   explicit MarginalizationFactor(std::shared_ptr<const LinearPrior> prior);
+  MarginalizationFactor(std::shared_ptr<const LinearPrior> prior, int first_block, int row_begin,
+                        int row_end);
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
   std::vector<double*> parameter_blocks() const;
 
  private:
   std::shared_ptr<const LinearPrior> prior_;
+  int first_block_ = 0;
+  int first_column_ = 0;
+  int row_begin_ = 0;
 };
+
+// The prior as one factor per block k: the rows of J at block k's columns, over blocks k, k + 1, ... (J is
+// upper trapezoidal). Together they are the whole prior; blocks past the last row get none.
+std::vector<std::unique_ptr<MarginalizationFactor>> PriorFactors(
+    const std::shared_ptr<const LinearPrior>& prior);
 
 }  // namespace vigil::estimator

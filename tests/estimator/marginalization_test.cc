@@ -9,6 +9,7 @@
 #include <ceres/loss_function.h>
 #include <ceres/sized_cost_function.h>
 #include <gtest/gtest.h>
+#include <Eigen/QR>
 
 #include "core/so3.h"
 #include "estimator/marginalization.h"
@@ -230,6 +231,124 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
   EXPECT_GT(g.norm(), 1e-2);                // the move made a gradient to compare
   EXPECT_LT((from_information.J.transpose() * from_information.J - H).norm(), 1e-9 * H.norm());
   EXPECT_LT((from_information.J.transpose() * from_information.r - g).norm(), 1e-9 * g.norm());
+}
+
+}  // namespace
+}  // namespace vigil::estimator
+
+namespace vigil::estimator {
+namespace {
+
+// The rows of J below its diagonal are zero: what PriorFactors() relies on.
+void ExpectUpperTrapezoidal(const Eigen::MatrixXd& J) {
+  ASSERT_LE(J.rows(), J.cols());
+  EXPECT_EQ(Eigen::MatrixXd(J.triangularView<Eigen::StrictlyLower>()).norm(), 0.0);
+}
+
+// Residuals and Jacobians (rows x ambient size per block) of a factor at `values` (from block `first` on).
+void EvaluateFactor(const MarginalizationFactor& factor, const std::vector<std::vector<double>>& values,
+                    std::size_t first, Eigen::VectorXd* r, std::vector<RowMajorMatrix>* jac) {
+  const int rows = factor.num_residuals();
+  std::vector<const double*> params;
+  std::vector<double*> jac_ptr;
+  jac->clear();
+  for (std::size_t k = first; k < values.size(); ++k) {
+    params.push_back(values[k].data());
+    jac->emplace_back(rows, static_cast<int>(values[k].size()));
+  }
+  for (RowMajorMatrix& j : *jac) jac_ptr.push_back(j.data());
+  r->resize(rows);
+  ASSERT_TRUE(factor.Evaluate(params.data(), r->data(), jac_ptr.data()));
+}
+
+// PriorFactors() cut the prior into pieces by its triangle: stacked, they are the whole factor, and the whole
+// factor's Jacobian is zero where a piece has no block.
+TEST(MarginalizationTest, PriorFactorsStackToTheWholePrior) {
+  std::vector<double> pose_a = Pose(Eigen::Vector3d(0.1, 0.2, 0.3), ExpQ(Eigen::Vector3d(0.01, 0.02, 0.1)));
+  std::vector<double> v = {0.3, -0.1, 0.2};
+  std::vector<double> pose_b = Pose(Eigen::Vector3d(0.6, -0.2, 0.05), ExpQ(Eigen::Vector3d(0.05, 0.0, 0.3)));
+  auto prior = std::make_shared<LinearPrior>();
+  for (std::vector<double>* b : {&pose_a, &v, &pose_b}) {
+    const int size = static_cast<int>(b->size());
+    prior->blocks.push_back({b->data(), size, Tangent(size), *b});
+  }
+  // Fewer rows than columns (a prior with a dropped direction): the last block gets only part of its rows.
+  prior->J = Eigen::MatrixXd(Eigen::MatrixXd::Random(13, 15).triangularView<Eigen::Upper>());
+  prior->r = Eigen::VectorXd::Random(13);
+  // Evaluate away from x0, rotations included.
+  const PoseManifold manifold;
+  std::vector<std::vector<double>> values = {pose_a, {0.35, -0.12, 0.1}, pose_b};
+  const Eigen::Matrix<double, 6, 1> d =
+      (Eigen::Matrix<double, 6, 1>() << 0.02, -0.01, 0.03, 0.2, -0.1, 0.1).finished();
+  manifold.Plus(pose_a.data(), d.data(), values[0].data());
+  manifold.Plus(pose_b.data(), (-d).eval().data(), values[2].data());
+
+  const MarginalizationFactor whole(prior);
+  Eigen::VectorXd r_whole;
+  std::vector<RowMajorMatrix> jac_whole;
+  EvaluateFactor(whole, values, 0, &r_whole, &jac_whole);
+  EXPECT_GT(r_whole.norm(), 0.1);
+
+  const auto pieces = PriorFactors(prior);
+  ASSERT_EQ(pieces.size(), 3u);
+  int row = 0;
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    const std::size_t first = prior->blocks.size() - pieces[p]->parameter_block_sizes().size();
+    EXPECT_EQ(first, p);
+    EXPECT_EQ(pieces[p]->parameter_blocks().front(), prior->blocks[first].address);
+    Eigen::VectorXd r;
+    std::vector<RowMajorMatrix> jac;
+    EvaluateFactor(*pieces[p], values, first, &r, &jac);
+    const int rows = pieces[p]->num_residuals();
+    EXPECT_LT((r - r_whole.segment(row, rows)).norm(), 1e-12 * r_whole.norm());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const RowMajorMatrix whole_rows = jac_whole[k].middleRows(row, rows);
+      if (k < first)
+        EXPECT_EQ(whole_rows.norm(), 0.0) << "piece " << p << " block " << k;
+      else
+        EXPECT_LT((jac[k - first] - whole_rows).norm(), 1e-12 * (1.0 + whole_rows.norm()));
+    }
+    row += rows;
+  }
+  EXPECT_EQ(row, 13);
+}
+
+// Marginalize() leaves J upper trapezoidal, from the Cholesky factor and from the eigen-decomposition that
+// replaces it when the Schur complement is not positive definite (here: a previous prior with a negative
+// eigenvalue, which the eigen-decomposition drops).
+TEST(MarginalizationTest, PriorIsUpperTrapezoidal) {
+  std::vector<double> s = {0.3}, k1 = {0.5, 0.2, -0.1}, k2 = {0.1, -0.4, 0.3};
+  const LinearCost t1({1, 3, 3}, Eigen::MatrixXd::Random(5, 7), Eigen::VectorXd::Random(5));
+  const LinearCost t2({3, 3}, Eigen::MatrixXd::Random(6, 6), Eigen::VectorXd::Random(6));
+  LinearPrior regular;
+  ASSERT_TRUE(Marginalize(
+      nullptr, {{&t1, nullptr, {s.data(), k1.data(), k2.data()}}, {&t2, nullptr, {k1.data(), k2.data()}}},
+      {s.data()}, 1e-8, &regular));
+  ASSERT_EQ(regular.J.rows(), 6);
+  ExpectUpperTrapezoidal(regular.J);
+
+  LinearPrior indefinite;
+  indefinite.blocks = {{k1.data(), 3, 3, k1}, {k2.data(), 3, 3, k2}};
+  const Eigen::Matrix<double, 6, 6> V =
+      Eigen::HouseholderQR<Eigen::Matrix<double, 6, 6>>(Eigen::Matrix<double, 6, 6>::Random()).householderQ();
+  Eigen::Matrix<double, 6, 1> eigenvalues;
+  eigenvalues << 4.0, 3.0, 2.0, 1.0, 5.0, -0.5;
+  indefinite.H = V * eigenvalues.asDiagonal() * V.transpose();
+  indefinite.g = Eigen::VectorXd::Random(6);
+  const LinearCost ts({1}, Eigen::MatrixXd::Ones(1, 1), Eigen::VectorXd::Zero(1));
+  LinearPrior fallback;
+  ASSERT_TRUE(Marginalize(&indefinite, {{&ts, nullptr, {s.data()}}}, {s.data()}, 1e-8, &fallback));
+  ASSERT_EQ(fallback.J.rows(), 5);  // the negative eigenvalue is dropped
+  ExpectUpperTrapezoidal(fallback.J);
+  eigenvalues[5] = 0.0;
+  const Eigen::MatrixXd psd_part = V * eigenvalues.asDiagonal() * V.transpose();
+  EXPECT_LT((fallback.J.transpose() * fallback.J - psd_part).norm(), 1e-9);
+  EXPECT_LT((fallback.H - psd_part).norm(), 1e-9);
+  // The gradient keeps its part in the kept directions.
+  EXPECT_LT((fallback.J.transpose() * fallback.r -
+             psd_part * psd_part.completeOrthogonalDecomposition().pseudoInverse() * indefinite.g)
+                .norm(),
+            1e-9);
 }
 
 }  // namespace
