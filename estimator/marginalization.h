@@ -3,7 +3,7 @@
 // Marginalize() evaluates every residual block touching the dropped blocks at the current values (robust loss
 // applied as Ceres' corrector does), adds the previous prior at the current values, forms H = J^T J and
 // b = J^T r over all involved blocks (tangent space), eliminates the dropped ones with the Schur complement
-// and stores the result in square-root form J_p, r_p with J_p^T J_p = S (+ a ridge of `eigen_threshold`) and
+// and stores the result in square-root form J_p, r_p with J_p^T J_p = S (+ a tiny ridge) and
 // J_p^T r_p = b_S, so that 1/2 |r_p + J_p dx|^2 reproduces the Schur complement S and its gradient b_S for
 // the kept blocks. J_p is the Cholesky factor of S (VINS-Mono stores sqrt(eigenvalues) V^T instead: the same
 // quadratic, at a fraction of the cost), so it is upper triangular. MarginalizationFactor evaluates rows of
