@@ -172,12 +172,12 @@ struct NormalEquations {
 
 // The kept blocks' Schur complement A, bk in square-root and information form (J, r, H, g of `prior`):
 // Cholesky of A with a ridge, J_p = L^T, r_p = L^-1 bk. The ridge makes the unobservable gauge directions
-// factorizable: `eigen_threshold` plus kRelativeRidge of A's largest diagonal entry, above the rounding of
-// the Schur complement (its gauge eigenvalues come out at about +-1e-15 of that entry; with the absolute
-// 1e-8 alone, 36 of the 323 priors of a 20 s paper run failed to factorize). An information of 1e-12 of the
-// largest is no constraint at all (paper run: 1e-5, a standard deviation of 300 m or rad). Falls back to the
-// eigen-decomposition (eigenvalues below the threshold dropped) if A is not positive semi-definite enough for
-// that. False when nothing is left.
+// factorizable: `eigen_threshold` plus kRelativeRidge of A's largest diagonal entry, at the level of the
+// rounding in the Schur complement (its gauge eigenvalues come out within about 1e-11 of that entry, either
+// sign). In a 20 s paper run 36 of the 323 priors failed to factorize with the absolute 1e-8 alone, 1 does
+// with this ridge. An information of 1e-12 of the largest is no constraint at all (paper run: about 1e-5, a
+// standard deviation of 300 m or rad). Falls back to the eigen-decomposition (eigenvalues below the
+// threshold dropped) if A is not positive semi-definite enough for that. False when nothing is left.
 bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double eigen_threshold,
                     LinearPrior* prior) {
   constexpr double kRelativeRidge = 1e-12;
