@@ -29,16 +29,16 @@ bool ReprojectionFactor::Evaluate(double const* const* parameters, double* resid
   const Vector3d p_Cj = R_BC_.transpose() * (p_Bj - p_BC_);
   const double inv_z = 1.0 / p_Cj.z();
 
+  const Eigen::Vector2d u = p_Cj.head<2>() * inv_z;  // the projection
   Eigen::Map<Eigen::Vector2d> r(residuals);
-  r = sqrt_information_ * (p_Cj.head<2>() * inv_z - n_j_);
+  r = sqrt_information_ * (u - n_j_);
   if (jacobians == nullptr) return true;
 
-  // Chain rule from the residual back through p_Cj = R_CB (R_j^T (p_W - p_j) - p_BC).
-  const double s = sqrt_information_ * inv_z;
-  Eigen::Matrix<double, 2, 3> d_r_d_pCj;
-  d_r_d_pCj << s, 0.0, -s * p_Cj.x() * inv_z,  //
-      0.0, s, -s * p_Cj.y() * inv_z;
-  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = d_r_d_pCj * R_BC_.transpose();
+  // Chain rule from the residual back through p_Cj = R_CB (R_j^T (p_W - p_j) - p_BC): d r / d p_Cj =
+  // sqrt_info / z [I2, -u], so d r / d p_Bj = sqrt_info / z (rows 0, 1 of R_CB - u row 2 of R_CB).
+  const auto R_CB = R_BC_.transpose();
+  const Eigen::Matrix<double, 2, 3> d_r_d_pBj =
+      (sqrt_information_ * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
   const Eigen::Matrix<double, 2, 3> d_r_d_pW = d_r_d_pBj * R_j.transpose();
   const Eigen::Matrix<double, 2, 3> d_r_d_pBi = d_r_d_pW * R_i;
   using RowMajor2x7 = Eigen::Matrix<double, 2, 7, Eigen::RowMajor>;
