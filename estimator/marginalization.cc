@@ -16,8 +16,10 @@ namespace {
 
 int TangentSize(int ambient) { return ambient == kPoseSize ? kPoseTangentSize : ambient; }
 
+using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 // Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
-void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, Eigen::MatrixXd* J) {
+void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, RowMajorMatrix* J) {
   if (loss == nullptr) return;
   const double s = r->squaredNorm();
   double rho[3];
@@ -95,7 +97,7 @@ struct Column {
 // and its gradient bs[s].
 struct NormalEquations {
   Eigen::MatrixXd H;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Hs;
+  RowMajorMatrix Hs;
   Eigen::VectorXd b, h, bs;
   std::vector<std::vector<int>> reach;
 
@@ -295,7 +297,8 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   }
 
   Eigen::VectorXd r;
-  Eigen::MatrixXd J, JtJ;
+  RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
+  Eigen::MatrixXd JtJ;
   Eigen::VectorXd Jtr;
   std::vector<double> jacobian_storage;
   std::vector<double*> jacobian_ptr;
@@ -319,17 +322,19 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     J.resize(rows, total);
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
       const int tangent = columns[term_columns[t][k]].tangent;
-      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
       J.middleCols(c, tangent) =
-          Eigen::Map<const RowMajor>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
+          Eigen::Map<const RowMajorMatrix>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
     Robustify(term.loss, &r, &J);
-    // Small terms (a reprojection: 2 x 13) skip the blocked matrix-product kernel and its set-up.
-    if (rows * total <= 64)
-      JtJ = J.transpose().lazyProduct(J);
-    else
+    // Terms of a few rows (a reprojection: 2 x 13) as a sum of outer products of their rows (vectorized,
+    // without the blocked matrix-product kernel and its set-up).
+    if (rows <= 4) {
+      JtJ.setZero(total, total);
+      for (int i = 0; i < rows; ++i) JtJ.noalias() += J.row(i).transpose() * J.row(i);
+    } else {
       JtJ.noalias() = J.transpose() * J;
+    }
     Jtr.noalias() = J.transpose() * r;
     eq.AddTerm(columns, term_columns[t], JtJ, Jtr);
   }
@@ -390,11 +395,10 @@ bool MarginalizationFactor::Evaluate(double const* const* parameters, double* re
   const auto J = prior_->J.block(row_begin_, first_column_, rows, o.dx.size());
   Eigen::Map<Eigen::VectorXd>(residuals, rows).noalias() = prior_->r.segment(row_begin_, rows) + J * o.dx;
   if (jacobians == nullptr) return true;
-  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   for (std::size_t k = 0, c = 0; k + first_block_ < prior_->blocks.size(); ++k) {
     const LinearPrior::Block& b = prior_->blocks[k + first_block_];
     if (jacobians[k] != nullptr) {
-      Eigen::Map<RowMajor> jac(jacobians[k], rows, b.size);
+      Eigen::Map<RowMajorMatrix> jac(jacobians[k], rows, b.size);
       if (b.size == kPoseSize) {
         jac.leftCols<3>() = J.middleCols<3>(c);
         jac.middleCols<3>(3).noalias() = J.middleCols<3>(c + 3) * o.Jr_inv[k];
