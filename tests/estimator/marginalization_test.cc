@@ -55,6 +55,18 @@ class LinearCost : public ceres::CostFunction {
   Eigen::VectorXd c_;
 };
 
+// Residuals and Jacobians (rows x ambient size per block) of `cost` at `blocks`.
+void EvaluateCost(const ceres::CostFunction& cost, const std::vector<const double*>& blocks,
+                  Eigen::VectorXd* r, std::vector<RowMajorMatrix>* jac) {
+  const int rows = cost.num_residuals();
+  std::vector<double*> jac_ptr;
+  jac->clear();
+  for (const int32_t size : cost.parameter_block_sizes()) jac->emplace_back(rows, size);
+  for (RowMajorMatrix& j : *jac) jac_ptr.push_back(j.data());
+  r->resize(rows);
+  ASSERT_TRUE(cost.Evaluate(blocks.data(), r->data(), jac_ptr.data()));
+}
+
 // The Schur complement (S, b_S) of `dropped` in the normal equations of `terms` (no loss functions), columns
 // in the order of `kept`; the dropped part through a pseudo-inverse.
 void DirectSchur(const std::vector<MarginalizationTerm>& terms, const std::vector<double*>& dropped,
@@ -78,14 +90,9 @@ void DirectSchur(const std::vector<MarginalizationTerm>& terms, const std::vecto
   for (const MarginalizationTerm& t : terms) {
     const int rows = t.cost->num_residuals();
     const std::vector<int32_t>& sizes = t.cost->parameter_block_sizes();
-    std::vector<RowMajorMatrix> jac(t.blocks.size());
-    std::vector<double*> jac_ptr;
-    for (std::size_t k = 0; k < t.blocks.size(); ++k) {
-      jac[k].resize(rows, sizes[k]);
-      jac_ptr.push_back(jac[k].data());
-    }
-    Eigen::VectorXd r(rows);
-    ASSERT_TRUE(t.cost->Evaluate(t.blocks.data(), r.data(), jac_ptr.data()));
+    Eigen::VectorXd r;
+    std::vector<RowMajorMatrix> jac;
+    EvaluateCost(*t.cost, {t.blocks.begin(), t.blocks.end()}, &r, &jac);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, m + n);
     for (std::size_t k = 0; k < t.blocks.size(); ++k)
       J.middleCols(column.at(t.blocks[k]), Tangent(sizes[k])) += jac[k].leftCols(Tangent(sizes[k]));
@@ -233,32 +240,17 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
   EXPECT_LT((from_information.J.transpose() * from_information.r - g).norm(), 1e-9 * g.norm());
 }
 
-}  // namespace
-}  // namespace vigil::estimator
-
-namespace vigil::estimator {
-namespace {
-
 // The rows of J below its diagonal are zero: what PriorFactors() relies on.
 void ExpectUpperTrapezoidal(const Eigen::MatrixXd& J) {
   ASSERT_LE(J.rows(), J.cols());
   EXPECT_EQ(Eigen::MatrixXd(J.triangularView<Eigen::StrictlyLower>()).norm(), 0.0);
 }
 
-// Residuals and Jacobians (rows x ambient size per block) of a factor at `values` (from block `first` on).
-void EvaluateFactor(const MarginalizationFactor& factor, const std::vector<std::vector<double>>& values,
-                    std::size_t first, Eigen::VectorXd* r, std::vector<RowMajorMatrix>* jac) {
-  const int rows = factor.num_residuals();
-  std::vector<const double*> params;
-  std::vector<double*> jac_ptr;
-  jac->clear();
-  for (std::size_t k = first; k < values.size(); ++k) {
-    params.push_back(values[k].data());
-    jac->emplace_back(rows, static_cast<int>(values[k].size()));
-  }
-  for (RowMajorMatrix& j : *jac) jac_ptr.push_back(j.data());
-  r->resize(rows);
-  ASSERT_TRUE(factor.Evaluate(params.data(), r->data(), jac_ptr.data()));
+// The values of blocks first, first + 1, ... as a factor's parameters.
+std::vector<const double*> From(const std::vector<std::vector<double>>& values, std::size_t first) {
+  std::vector<const double*> out;
+  for (std::size_t k = first; k < values.size(); ++k) out.push_back(values[k].data());
+  return out;
 }
 
 // PriorFactors() cut the prior into pieces by its triangle: stacked, they are the whole factor, and the whole
@@ -286,7 +278,7 @@ TEST(MarginalizationTest, PriorFactorsStackToTheWholePrior) {
   const MarginalizationFactor whole(prior);
   Eigen::VectorXd r_whole;
   std::vector<RowMajorMatrix> jac_whole;
-  EvaluateFactor(whole, values, 0, &r_whole, &jac_whole);
+  EvaluateCost(whole, From(values, 0), &r_whole, &jac_whole);
   EXPECT_GT(r_whole.norm(), 0.1);
 
   const auto pieces = PriorFactors(prior);
@@ -298,7 +290,7 @@ TEST(MarginalizationTest, PriorFactorsStackToTheWholePrior) {
     EXPECT_EQ(pieces[p]->parameter_blocks().front(), prior->blocks[first].address);
     Eigen::VectorXd r;
     std::vector<RowMajorMatrix> jac;
-    EvaluateFactor(*pieces[p], values, first, &r, &jac);
+    EvaluateCost(*pieces[p], From(values, first), &r, &jac);
     const int rows = pieces[p]->num_residuals();
     EXPECT_LT((r - r_whole.segment(row, rows)).norm(), 1e-12 * r_whole.norm());
     for (std::size_t k = 0; k < values.size(); ++k) {
