@@ -14,8 +14,6 @@
 namespace vigil::estimator {
 namespace {
 
-int TangentSize(int ambient) { return ambient == kPoseSize ? kPoseTangentSize : ambient; }
-
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
@@ -237,7 +235,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     Column c;
     c.address = address;
     c.ambient = ambient;
-    c.tangent = TangentSize(ambient);
+    c.tangent = TangentSizeOf(ambient);
     c.dropped = dropped.count(address) > 0;
     c.coupled = previous != nullptr && previous->Involves(address);  // the prior is dense over its blocks
     columns.push_back(c);

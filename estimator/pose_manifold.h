@@ -19,6 +19,11 @@ inline constexpr int kPoseSize = 7;
 inline constexpr int kPoseTangentSize = 6;
 inline constexpr int kSpeedBiasSize = 9;
 
+// Tangent size of a parameter block of the window from its ambient size (a pose's 7 -> 6; vectors: the same).
+inline constexpr int TangentSizeOf(int ambient_size) {
+  return ambient_size == kPoseSize ? kPoseTangentSize : ambient_size;
+}
+
 class PoseManifold : public ceres::Manifold {
  public:
   int AmbientSize() const override { return kPoseSize; }

@@ -17,8 +17,6 @@ namespace {
 
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-int Tangent(int size) { return size == kPoseSize ? kPoseTangentSize : size; }
-
 // x [+] delta for a block (pose: manifold, else vector addition).
 std::vector<double> PlusBlock(const std::vector<double>& x, const Eigen::VectorXd& delta) {
   std::vector<double> out(x.size());
@@ -47,7 +45,7 @@ double WorstJacobianError(const ceres::CostFunction& cost, std::vector<std::vect
   double worst = 0.0;
   const double h = 1e-6;
   for (std::size_t k = 0; k < blocks.size(); ++k) {
-    const int tangent = Tangent(sizes[k]);
+    const int tangent = TangentSizeOf(sizes[k]);
     if (sizes[k] == kPoseSize) {
       EXPECT_LT(jac[k].col(6).norm(), 1e-15);  // the tangent convention
     }

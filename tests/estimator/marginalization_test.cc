@@ -21,8 +21,6 @@ namespace {
 
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-int Tangent(int size) { return size == kPoseSize ? kPoseTangentSize : size; }
-
 std::vector<double> Pose(const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
   return {p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w()};
 }
@@ -79,11 +77,11 @@ void DirectSchur(const std::vector<MarginalizationTerm>& terms, const std::vecto
       size_of[t.blocks[k]] = t.cost->parameter_block_sizes()[k];
   for (double* b : dropped) {
     column[b] = m;
-    m += Tangent(size_of.at(b));
+    m += TangentSizeOf(size_of.at(b));
   }
   for (double* b : kept) {
     column[b] = m + n;
-    n += Tangent(size_of.at(b));
+    n += TangentSizeOf(size_of.at(b));
   }
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + n, m + n);
   Eigen::VectorXd g = Eigen::VectorXd::Zero(m + n);
@@ -95,7 +93,8 @@ void DirectSchur(const std::vector<MarginalizationTerm>& terms, const std::vecto
     EvaluateCost(*t.cost, {t.blocks.begin(), t.blocks.end()}, &r, &jac);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(rows, m + n);
     for (std::size_t k = 0; k < t.blocks.size(); ++k)
-      J.middleCols(column.at(t.blocks[k]), Tangent(sizes[k])) += jac[k].leftCols(Tangent(sizes[k]));
+      J.middleCols(column.at(t.blocks[k]), TangentSizeOf(sizes[k])) +=
+          jac[k].leftCols(TangentSizeOf(sizes[k]));
     H += J.transpose() * J;
     g += J.transpose() * r;
   }
@@ -262,7 +261,7 @@ TEST(MarginalizationTest, PriorFactorsStackToTheWholePrior) {
   auto prior = std::make_shared<LinearPrior>();
   for (std::vector<double>* b : {&pose_a, &v, &pose_b}) {
     const int size = static_cast<int>(b->size());
-    prior->blocks.push_back({b->data(), size, Tangent(size), *b});
+    prior->blocks.push_back({b->data(), size, TangentSizeOf(size), *b});
   }
   // Fewer rows than columns (a prior with a dropped direction): the last block gets only part of its rows.
   prior->J = Eigen::MatrixXd(Eigen::MatrixXd::Random(13, 15).triangularView<Eigen::Upper>());
