@@ -79,6 +79,10 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   problem_options.enable_fast_removal = false;
+  // The problem is rebuilt every frame by the code below, always from the window's own blocks (distinct,
+  // non-overlapping arrays of fixed sizes), so Ceres' per-block checks against aliasing and size mismatches
+  // find nothing; they cost 1.1 % of a paper run's instructions (callgrind, BM_RunPaper/20).
+  problem_options.disable_all_safety_checks = true;
   ceres::Problem problem(problem_options);
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
 

@@ -99,13 +99,15 @@ struct NormalEquations {
   Eigen::VectorXd b, h, bs;
   std::vector<std::vector<int>> reach;
 
-  void Resize(int scalars, int dense) {
+  // `dense` columns in `dense_blocks` blocks.
+  void Resize(int scalars, int dense, int dense_blocks) {
     H = Eigen::MatrixXd::Zero(dense, dense);
     b = Eigen::VectorXd::Zero(dense);
     Hs = Eigen::MatrixXd::Zero(scalars, dense);
     h = Eigen::VectorXd::Zero(scalars);
     bs = Eigen::VectorXd::Zero(scalars);
     reach.assign(scalars, {});
+    for (std::vector<int>& r : reach) r.reserve(dense_blocks);
   }
   // Adds a term's J^T J and J^T r, whose columns are those of `indices` (into `columns`) in that order.
   void AddTerm(const std::vector<Column>& columns, const std::vector<int>& indices,
@@ -245,6 +247,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   std::vector<std::vector<int>> term_columns(terms.size());
   for (std::size_t t = 0; t < terms.size(); ++t) {
     const std::vector<int32_t>& sizes = terms[t].cost->parameter_block_sizes();
+    term_columns[t].reserve(terms[t].blocks.size());
     int dropped_scalars = 0;
     for (std::size_t k = 0; k < terms[t].blocks.size(); ++k) {
       add(terms[t].blocks[k], sizes[k]);
@@ -272,7 +275,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   if (n == 0) return false;
 
   NormalEquations eq;
-  eq.Resize(scalars, m + n);
+  eq.Resize(scalars, m + n, static_cast<int>(columns.size()) - scalars);
   if (previous != nullptr) {
     // The prior at the current values: J_x = J D, r_x = r + J dx with D = diag(I, Jr_inv per rotation), so
     // J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
