@@ -54,8 +54,8 @@ void BM_RunPaper(benchmark::State& state) {
 // The development machine's speed varies by up to 1.8x from run to run (it is shared: a second run on its other
 // core slows this one about as much), so one run says little. `--benchmark_repetitions=10` adds the median and
 // the minimum over the runs (the minimum: the run least disturbed). Instruction counts are exact and repeatable:
-//   valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_estimator \
-//       --benchmark_filter='BM_RunPaper/20/'   (the "Collected" line; about 50x slower than the run)
+//   valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_estimator
+//       --benchmark_filter='BM_RunPaper/20/'   (one command; its "Collected" line; about 60x slower)
 BENCHMARK(BM_RunPaper)
     ->Arg(20)
     ->Arg(200)
