@@ -51,9 +51,10 @@ void BM_RunPaper(benchmark::State& state) {
   state.counters["ate_m"] = vigil::estimator::testing::PosYawAteRmse(result.states, data.groundtruth);
   state.counters["ok"] = result.ok ? 1.0 : 0.0;
 }
-// The development machine's speed varies by up to 1.8x from run to run (it is shared: a second run on its other
-// core slows this one about as much), so one run says little. `--benchmark_repetitions=10` adds the median and
-// the minimum over the runs (the minimum: the run least disturbed). Instruction counts are exact and repeatable:
+// The development machine's speed varies by up to 1.8x from run to run (it is shared: a second run on its
+// other core slows this one about as much), so one run says little. `--benchmark_repetitions=10` adds the
+// median and the minimum over the runs (the minimum: the run least disturbed). Instruction counts are exact
+// and repeatable:
 //   valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_estimator
 //       --benchmark_filter='BM_RunPaper/20/'   (one command; its "Collected" line; about 60x slower)
 BENCHMARK(BM_RunPaper)
@@ -61,7 +62,8 @@ BENCHMARK(BM_RunPaper)
     ->Arg(200)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
-    ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+    ->ComputeStatistics("min",
+                        [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 
 int Accuracy(int seeds, const EstimatorOptions& estimator_options, bool nominal_only) {
   for (const bool glitches : {false, true}) {
