@@ -1,6 +1,8 @@
 // Estimator cost and accuracy on the paper's scenario (ellipse, 36 landmarks, IMU 200 Hz, camera 30 Hz).
 //   build/bench/bench_estimator
-//       whole 20 s and 200 s runs; counters: per-frame optimize / marginalize cost [ms], ATE [m]
+//       whole 20 s and 200 s runs; counters: per-frame optimize / marginalize cost [ms], ATE [m]; with
+//       --benchmark_repetitions=10 also their median and minimum (one run varies by up to 1.8x on a shared
+//       machine; README, Development, for instruction counts)
 //   build/bench/bench_estimator --accuracy [seeds [estimator.yaml [nominal]]]
 //       ATE RMSE (posyaw) per seed, nominal and with N(50,10) glitches on az at rate 0.01, no detector;
 //       estimator.yaml holds keys of the `estimator:` section; VIGIL_EST_TRACE=1 prints every 30th state's
@@ -51,12 +53,6 @@ void BM_RunPaper(benchmark::State& state) {
   state.counters["ate_m"] = vigil::estimator::testing::PosYawAteRmse(result.states, data.groundtruth);
   state.counters["ok"] = result.ok ? 1.0 : 0.0;
 }
-// The development machine's speed varies by up to 1.8x from run to run (it is shared: a second run on its
-// other core slows this one about as much), so one run says little. `--benchmark_repetitions=10` adds the
-// median and the minimum over the runs (the minimum: the run least disturbed). Instruction counts are exact
-// and repeatable:
-//   valgrind --tool=callgrind --callgrind-out-file=/dev/null build/bench/bench_estimator
-//       --benchmark_filter='BM_RunPaper/20/'   (one command; its "Collected" line; about 60x slower)
 BENCHMARK(BM_RunPaper)
     ->Arg(20)
     ->Arg(200)
