@@ -29,8 +29,11 @@ struct TrajectoryEvaluation {
   Alignment align = Alignment::kPosYaw;
   SimilarityTransform alignment;  // estimate -> ground-truth world (identity when nothing matched)
   std::size_t gt_poses = 0, est_poses = 0, matched_poses = 0;
-  double coverage = 0.0;     // matched_poses / gt_poses (0 without ground truth)
-  double gt_length_m = 0.0;  // distance travelled along the matched ground truth
+  double coverage = 0.0;  // matched_poses / gt_poses (0 without ground truth)
+  // Distance travelled along the matched ground truth (the poses an estimate pose was associated with).
+  // rpg_trajectory_evaluation reports the length of the whole (raw) ground truth instead; the two agree when
+  // coverage = 1 and this one is shorter when the estimate starts late (initialization) or stops early.
+  double gt_length_m = 0.0;
   ErrorStatistics ate_trans_m, ate_rot_deg;
   std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
 };
@@ -40,9 +43,10 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
                                         const EvaluationOptions& options,
                                         int64_t max_difference_ns = kDefaultMaxAssociationDifferenceNs);
 
-// {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses"}, "relative": [{"distance_m",
-// "trans_m", "trans_perc", "yaw_deg", "rot_deg", "pairs"}...], "coverage": fraction, "gt_length_m": ..}
-// (formats.md).
+// {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
+// [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
+// ..} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
+// count); the metrics.json of a run directory (README, "Evaluation").
 nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 
 // A readable multi-line table of the same numbers (for `vigil eval`).

@@ -11,6 +11,7 @@
 #include "estimator/run_estimator.h"
 #include "experiments/detection_stage.h"
 #include "experiments/evaluate_trajectory.h"
+#include "experiments/imu_axis_record.h"
 #include "experiments/run_inputs.h"
 #include "experiments/run_metrics.h"
 #include "sim/simulator.h"
@@ -65,6 +66,15 @@ estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& data
   }
 }
 
+// The glitched axis (the first of glitch.axes, a_z when none) as measured, clean and mitigated.
+ImuAxisRecord ImuAxisRecordOf(const RunConfig& config, const RunData& data,
+                              const detectors::DetectionResult& detection) {
+  const ImuAxis axis = config.sim.glitch.axes.empty() ? ImuAxis::kAz : config.sim.glitch.axes.front();
+  const bool with_clean = data.with_clean && data.dataset.imu_clean.size() == data.dataset.imu.size();
+  return MakeImuAxisRecord(axis, data.dataset.imu, with_clean ? &data.dataset.imu_clean : nullptr,
+                           detection.cleaned, detection.flagged);
+}
+
 }  // namespace
 
 nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
@@ -87,6 +97,10 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
       RunDetection(config, data.dataset, templates.get(), data.with_glitches, data.with_clean);
   summary.wall.detect_s = SecondsSince(t);
 
+  // What the figures draw, taken before the cleaned stream moves into the estimator.
+  const std::string imu_axis_csv =
+      options.write_figure_data ? ImuAxisCsv(ImuAxisRecordOf(config, data, detection.result)) : std::string();
+
   t = Clock::now();
   const estimator::EstimatorResult result =
       Estimate(config, data.dataset, std::move(detection.result.cleaned));
@@ -106,6 +120,10 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
     if (config.detector.type != detectors::DetectorType::kNone)
       WriteFileAtomic(dir / "detections.csv",
                       detectors::DetectionsCsv(data.dataset.imu, detection.result.flagged));
+  }
+  if (options.write_figure_data) {
+    WriteFileAtomic(dir / dataset_files::kLandmarks, LandmarksCsv(data.dataset.landmarks));
+    WriteFileAtomic(dir / kImuAxisFile, imu_axis_csv);
   }
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);

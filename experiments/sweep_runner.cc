@@ -86,6 +86,7 @@ SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRun
         config.seed = run.seed;
         RunOptions run_options;
         run_options.write_trajectories = spec.write_trajectories;
+        run_options.write_figure_data = spec.write_figure_data;
         run_options.templates = templates.per_cell[run.cell].get();
         return executor(config, run_options, run_dir);
       },

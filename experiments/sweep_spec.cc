@@ -178,6 +178,8 @@ SweepSpec LoadSweepSpec(const std::string& path) {
       if (!config::Decode(v, &spec.template_seed, &why)) Fail(path, v, key, why);
     } else if (key == "write_trajectories") {
       if (!config::Decode(v, &spec.write_trajectories, &why)) Fail(path, v, key, why);
+    } else if (key == "write_figure_data") {
+      if (!config::Decode(v, &spec.write_figure_data, &why)) Fail(path, v, key, why);
     } else if (key == "table_methods") {
       table_methods_node.reset(v);
     } else {
@@ -278,6 +280,8 @@ std::string ResolvedSweepYaml(const SweepSpec& spec) {
   out << YAML::Key << "seeds" << YAML::Value << YAML::Flow << spec.seeds;
   out << YAML::Key << "template_seed" << YAML::Value << spec.template_seed;
   out << YAML::Key << "write_trajectories" << YAML::Value << spec.write_trajectories;
+  // Only when off: a sweep directory started before the key existed resumes (its sweep.yaml is unchanged).
+  if (!spec.write_figure_data) out << YAML::Key << "write_figure_data" << YAML::Value << false;
   out << YAML::Key << "table_methods" << YAML::Value << YAML::Flow << spec.table_methods;
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";

@@ -15,6 +15,7 @@
 //   seeds: {count: 10, first: 1}     # or an explicit list [1, 2, 5]
 //   template_seed: 1000              # DTW templates: glitch-free simulation with this seed (not a run seed)
 //   write_trajectories: true         # keep stamped_*.txt / detections.csv in every run directory
+//   write_figure_data: true          # keep landmarks.csv / imu_axis.csv (what figures 1, 2, 5 draw)
 //   table_methods: [trunc, dtw]      # methods (in order) of tables 2-4 (default: every method)
 //
 // A cell is one combination of axis settings and a method; a run is a cell and a seed. Run ids are readable
@@ -63,6 +64,7 @@ struct SweepSpec {
   std::vector<uint64_t> seeds;
   uint64_t template_seed = 1000;
   bool write_trajectories = true;
+  bool write_figure_data = true;
   std::vector<std::string> table_methods;  // never empty after loading
 
   std::size_t cell_count() const;  // product of the axis sizes x methods

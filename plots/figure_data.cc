@@ -8,7 +8,6 @@
 
 #include "experiments/metrics_access.h"
 #include "plots/axes.h"
-#include "plots/detection_replay.h"
 #include "plots/trajectory_alignment.h"
 
 namespace vigil::plots {
@@ -43,6 +42,15 @@ ScenarioData ScenarioDataOf(const Dataset& dataset, const std::string& title) {
   return data;
 }
 
+ScenarioData ScenarioDataOf(const Trajectory& groundtruth, const std::vector<Landmark>& landmarks,
+                            const std::string& title) {
+  ScenarioData data;
+  data.title = title;
+  data.path_W = Positions(groundtruth);
+  for (const Landmark& l : landmarks) data.landmarks_W.push_back(l.p_W);
+  return data;
+}
+
 ImuAxis GlitchedAxis(const experiments::RunConfig& config) {
   return config.sim.glitch.axes.empty() ? ImuAxis::kAz : config.sim.glitch.axes.front();
 }
@@ -59,6 +67,18 @@ ImuTrace ImuTraceOf(const Dataset& dataset, ImuAxis axis, const std::string& lab
     trace.measured.push_back(dataset.imu[i].axis(a));
     trace.clean.push_back(clean[i].axis(a));
   }
+  return trace;
+}
+
+ImuTrace ImuTraceOf(const experiments::ImuAxisRecord& record, const std::string& label) {
+  ImuTrace trace;
+  trace.label = label;
+  trace.axis_name = AxisSymbol(record.axis);
+  trace.unit = AxisUnit(record.axis);
+  for (std::size_t i = 0; i < record.t_ns.size(); ++i)
+    trace.t_s.push_back(NsToS(record.t_ns[i] - record.t_ns.front()));
+  trace.measured = record.raw;
+  trace.clean = record.clean.size() == record.raw.size() ? record.clean : record.raw;
   return trace;
 }
 
@@ -141,25 +161,18 @@ RelativeErrorRow RelativeErrorRowOfRuns(const std::string& label, const std::vec
   return row;
 }
 
-DetectionTrace DetectionTraceOf(const RunData& run, const Dataset& dataset, double excerpt_s) {
-  const ImuAxis axis = GlitchedAxis(run.config);
-  const int a = static_cast<int>(axis);
-  const detectors::DetectionResult result = ReplayDetection(run.config, dataset.imu);
+DetectionTrace DetectionTraceOf(const RunData& run, const experiments::ImuAxisRecord& record,
+                                double excerpt_s) {
   DetectionTrace trace;
   trace.detector = run.method;
-  trace.axis_name = AxisSymbol(axis);
-  trace.unit = AxisUnit(axis);
-  const bool recorded = run.flagged.size() == dataset.imu.size() && !dataset.imu.empty() &&
-                        run.detection_t_ns.front() == dataset.imu.front().t_ns &&
-                        run.detection_t_ns.back() == dataset.imu.back().t_ns;
-  const bool have_clean = dataset.imu_clean.size() == dataset.imu.size();
-  for (std::size_t i = 0; i < dataset.imu.size(); ++i) {
-    trace.t_s.push_back(NsToS(dataset.imu[i].t_ns - dataset.imu.front().t_ns));
-    trace.raw.push_back(dataset.imu[i].axis(a));
-    trace.mitigated.push_back(result.cleaned[i].axis(a));
-    if (have_clean) trace.clean.push_back(dataset.imu_clean[i].axis(a));
-    trace.flagged.push_back(recorded ? run.flagged[i] : result.flagged[i]);
-  }
+  trace.axis_name = AxisSymbol(record.axis);
+  trace.unit = AxisUnit(record.axis);
+  for (std::size_t i = 0; i < record.t_ns.size(); ++i)
+    trace.t_s.push_back(NsToS(record.t_ns[i] - record.t_ns.front()));
+  trace.raw = record.raw;
+  trace.mitigated = record.mitigated;
+  if (record.clean.size() == record.raw.size()) trace.clean = record.clean;
+  trace.flagged = record.flagged;
   // The excerpt: the window with the most flagged samples (the earliest such window).
   const std::size_t n = trace.t_s.size();
   std::size_t best_start = 0, best_count = 0, count = 0, end = 0;

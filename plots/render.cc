@@ -2,17 +2,16 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
 #include <utility>
 
-#include "core/config.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "plots/figure_data.h"
 #include "plots/gl_context.h"
-#include "sim/simulator.h"
 
 namespace vigil::plots {
 namespace {
@@ -36,6 +35,11 @@ class FigureWriter {
     written_.push_back(path);
   }
 
+  // A figure whose data is missing: one line on stderr, no file.
+  void Skip(const std::string& name, const std::string& why) {
+    std::fprintf(stderr, "vigil: %s skipped: %s\n", name.c_str(), why.c_str());
+  }
+
   std::vector<fs::path> written() const { return written_; }
 
  private:
@@ -44,28 +48,6 @@ class FigureWriter {
   GlContext gl_;
   TextRenderer text_;
   std::vector<fs::path> written_;
-};
-
-// The recordings of a sweep's runs (RecordingOf), keyed by dataset directory or by (simulator options, seed):
-// runs of different methods share their recording, so each one is simulated or read once per rendering.
-class SimulationCache {
- public:
-  const Dataset& Of(const RunData& run) {
-    const auto key = KeyOf(run);
-    auto it = cache_.find(key);
-    if (it == cache_.end()) it = cache_.emplace(key, RecordingOf(run)).first;
-    return it->second;
-  }
-
- private:
-  static std::pair<std::string, uint64_t> KeyOf(const RunData& run) {
-    if (const std::optional<fs::path> dataset = RecordedDatasetOf(run))
-      return {"dataset " + dataset->string(), 0};
-    sim::SimOptions sim = run.config.sim;  // ToYaml visits mutably
-    return {config::ToYaml(sim), run.config.seed};
-  }
-
-  std::map<std::pair<std::string, uint64_t>, Dataset> cache_;
 };
 
 // The run with the smallest seed (then id) among those `keep` accepts; null when none.
@@ -77,6 +59,24 @@ const RunData* FirstRun(const SweepData& sweep, Pred keep) {
     if (best == nullptr || run.config.seed < best->config.seed) best = &run;
   }
   return best;
+}
+
+// Figure 1 from the run's ground truth at its frames and its landmarks.csv.
+void WriteScenarioFigure(FigureWriter* writer, const RunData& run, const std::string& title) {
+  std::string why;
+  const std::optional<std::vector<Landmark>> landmarks = RecordedLandmarks(run, &why);
+  if (run.groundtruth.empty()) why = (run.dir / "stamped_groundtruth.txt").string() + " missing";
+  if (!landmarks || run.groundtruth.empty()) return writer->Skip("fig1_scenario.png", why);
+  writer->Write("fig1_scenario.png", ScenarioFigure(ScenarioDataOf(run.groundtruth, *landmarks, title)));
+}
+
+// Figure 5 from the run's imu_axis.csv.
+void WriteDetectionFigure(FigureWriter* writer, const RunData& run, const FigureOptions& options) {
+  std::string why;
+  const std::optional<experiments::ImuAxisRecord> imu = RecordedImuAxis(run, &why);
+  if (!imu) return writer->Skip("fig5_detection.png", why);
+  writer->Write("fig5_detection.png",
+                DetectionFigure(DetectionTraceOf(run, *imu, options.detection_excerpt_s)));
 }
 
 std::string RunTitle(const RunData& run) {
@@ -99,11 +99,15 @@ std::vector<fs::path> RenderRunFigures(const fs::path& run_dir, const fs::path& 
                                        const FigureOptions& options) {
   ValidateFigureOptions(options);
   const RunData run = LoadRunDirectory(run_dir);
-  const Dataset data = RecordingOf(run);
+  std::string why;
+  const std::optional<experiments::ImuAxisRecord> imu = RecordedImuAxis(run, &why);
   FigureWriter writer(out_dir, options);
-  writer.Write("fig1_scenario.png", ScenarioFigure(ScenarioDataOf(data, "Scenario of " + RunTitle(run))));
-  writer.Write("fig2_glitches.png",
-               GlitchFigure({ImuTraceOf(data, GlitchedAxis(run.config), run.glitch.Label())}));
+  WriteScenarioFigure(&writer, run, "Scenario of " + RunTitle(run));
+  if (imu) {
+    writer.Write("fig2_glitches.png", GlitchFigure({ImuTraceOf(*imu, run.glitch.Label())}));
+  } else {
+    writer.Skip("fig2_glitches.png", why);
+  }
   if (!run.groundtruth.empty()) {
     writer.Write("fig3_trajectories.png", TrajectoryFigure({TrajectoryPanelOf(run.glitch.Label(), {&run})}));
   }
@@ -112,10 +116,7 @@ std::vector<fs::path> RenderRunFigures(const fs::path& run_dir, const fs::path& 
     writer.Write("fig4_relative_error.png",
                  RelativeErrorFigure({row}, "box: mean ± std of the run's segments, whiskers: min and max"));
   }
-  if (run.config.detector.type != detectors::DetectorType::kNone) {
-    writer.Write("fig5_detection.png",
-                 DetectionFigure(DetectionTraceOf(run, data, options.detection_excerpt_s)));
-  }
+  if (run.config.detector.type != detectors::DetectorType::kNone) WriteDetectionFigure(&writer, run, options);
   return writer.written();
 }
 
@@ -128,18 +129,22 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
   ValidateFigureOptions(options);
   const SweepData sweep = LoadSweepDirectory(sweep_dir);
   FigureWriter writer(out_dir, options);
-  SimulationCache simulations;
 
-  const RunData* first = FirstRun(sweep, [](const RunData&) { return true; });
-  writer.Write("fig1_scenario.png",
-               ScenarioFigure(ScenarioDataOf(simulations.Of(*first), "Simulated trajectory and landmarks")));
+  WriteScenarioFigure(&writer, *FirstRun(sweep, [](const RunData&) { return true; }),
+                      "Simulated trajectory and landmarks");
 
   std::vector<ImuTrace> traces;
+  std::string traces_missing;
   std::vector<TrajectoryPanel> trajectory_rows;
   std::vector<RelativeErrorRow> error_rows;
   for (const GlitchSetting& setting : sweep.settings) {
     const RunData* rep = FirstRun(sweep, [&](const RunData& r) { return r.glitch == setting; });
-    traces.push_back(ImuTraceOf(simulations.Of(*rep), GlitchedAxis(rep->config), setting.Label()));
+    std::string why;
+    if (const auto imu = RecordedImuAxis(*rep, &why)) {
+      traces.push_back(ImuTraceOf(*imu, setting.Label()));
+    } else if (traces_missing.empty()) {
+      traces_missing = why;
+    }
     std::vector<const RunData*> per_method, all;
     for (const std::string& method : sweep.methods) {
       const RunData* r = FirstRun(sweep, [&](const RunData& x) {
@@ -153,7 +158,11 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
     trajectory_rows.push_back(TrajectoryPanelOf(setting.Label(), per_method));
     error_rows.push_back(RelativeErrorRowOfRuns(setting.Label(), all));
   }
-  writer.Write("fig2_glitches.png", GlitchFigure(traces));
+  if (traces_missing.empty()) {
+    writer.Write("fig2_glitches.png", GlitchFigure(traces));
+  } else {
+    writer.Skip("fig2_glitches.png", traces_missing);
+  }
   // Trajectories only when some run kept them (a sweep may disable writing them).
   if (std::any_of(trajectory_rows.begin(), trajectory_rows.end(),
                   [](const TrajectoryPanel& p) { return !p.estimates.empty(); })) {
@@ -174,10 +183,7 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
       });
     }
   }
-  if (detected != nullptr) {
-    writer.Write("fig5_detection.png", DetectionFigure(DetectionTraceOf(*detected, simulations.Of(*detected),
-                                                                        options.detection_excerpt_s)));
-  }
+  if (detected != nullptr) WriteDetectionFigure(&writer, *detected, options);
 
   std::vector<std::string> labels;
   for (const GlitchSetting& s : sweep.settings) labels.push_back(s.Label());

@@ -8,6 +8,12 @@
 // fig5_detection.png, fig6_summary.png. A sweep gets all six (3 only when some run kept its trajectories, 5
 // only when some run used a detector); a run directory 1-5 as far as its data allows (3 needs the
 // trajectories, 4 metrics.json, 5 a detector); a dataset directory 1 and 2.
+//
+// Figures draw only what the directories hold, never re-simulating or re-running a detector: 1 needs the
+// run's stamped_groundtruth.txt and landmarks.csv, 2 and 5 its imu_axis.csv (run.h's figure data; for a
+// sweep, those of its lowest-seed runs). A run directory without them (written by an older vigil or with
+// --no-figure-data) gets the other figures and one line "vigil: FIGURE skipped: FILE missing (...)" on
+// stderr per figure left out.
 #pragma once
 
 #include <filesystem>

@@ -8,7 +8,6 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/output.h"
-#include "sim/simulator.h"
 
 namespace vigil::plots {
 namespace {
@@ -149,21 +148,31 @@ SweepData LoadSweepDirectory(const std::filesystem::path& dir) {
 
 namespace fs = std::filesystem;
 
-std::optional<fs::path> RecordedDatasetOf(const RunData& run) {
-  if (!run.metrics.is_object() || !run.metrics.contains("dataset")) return std::nullopt;
-  const nlohmann::json& dataset = run.metrics["dataset"];
-  if (!dataset.is_string() || dataset.get<std::string>().empty())
-    throw InputError((run.dir / "metrics.json").string() + ": dataset: expected a directory path");
-  return fs::path(dataset.get<std::string>());
+namespace {
+
+// `dir/name` when it is a file, else nothing with `why` naming it.
+std::optional<fs::path> RecordedFile(const RunData& run, const char* name, std::string* why) {
+  const fs::path path = run.dir / name;
+  if (fs::is_regular_file(path)) return path;
+  if (why != nullptr)
+    *why = path.string() +
+           " missing (the run was written without figure data: an older vigil, --no-figure-data "
+           "or write_figure_data: false)";
+  return std::nullopt;
 }
 
-Dataset RecordingOf(const RunData& run) {
-  const std::optional<fs::path> dataset = RecordedDatasetOf(run);
-  if (!dataset) return sim::Simulate(run.config.sim, run.config.seed);
-  if (!fs::is_directory(*dataset))
-    throw InputError((run.dir / "metrics.json").string() + ": dataset: " + dataset->string() +
-                     ": the run's dataset directory is gone (its figures need the recorded IMU)");
-  return ReadDataset(*dataset);
+}  // namespace
+
+std::optional<std::vector<Landmark>> RecordedLandmarks(const RunData& run, std::string* why) {
+  const std::optional<fs::path> path = RecordedFile(run, dataset_files::kLandmarks, why);
+  if (!path) return std::nullopt;
+  return ReadLandmarksCsv(path->string());
+}
+
+std::optional<experiments::ImuAxisRecord> RecordedImuAxis(const RunData& run, std::string* why) {
+  const std::optional<fs::path> path = RecordedFile(run, experiments::kImuAxisFile, why);
+  if (!path) return std::nullopt;
+  return experiments::ReadImuAxisCsv(path->string());
 }
 
 }  // namespace vigil::plots

@@ -16,6 +16,7 @@
 
 #include "core/dataset.h"
 #include "core/types.h"
+#include "experiments/imu_axis_record.h"
 #include "experiments/run_config.h"
 
 namespace vigil::plots {
@@ -55,12 +56,12 @@ struct RunData {
 // Reads a run directory; config.yaml is required, the other files are optional. Bad files throw InputError.
 RunData LoadRunDirectory(const std::filesystem::path& dir);
 
-// Where the recording a run consumed comes from: the dataset directory its metrics.json names (`vigil run
-// --dataset`), else nothing -- the run simulated config.yaml's scenario and seed.
-std::optional<std::filesystem::path> RecordedDatasetOf(const RunData& run);
-// The recording a run consumed: that dataset read again (InputError when it is gone), else the simulation of
-// config.yaml re-run (deterministic, so the same data).
-Dataset RecordingOf(const RunData& run);
+// What a run recorded for its figures (run.h's figure data), read when a figure needs it: landmarks.csv and
+// imu_axis.csv (experiments/imu_axis_record.h). Nothing when the file is absent (a run written before runs
+// recorded it, or with --no-figure-data / write_figure_data: false); `why` then says which file is missing.
+// A file that is there but bad throws InputError.
+std::optional<std::vector<Landmark>> RecordedLandmarks(const RunData& run, std::string* why);
+std::optional<experiments::ImuAxisRecord> RecordedImuAxis(const RunData& run, std::string* why);
 
 struct SweepData {
   std::filesystem::path dir;

@@ -5,6 +5,7 @@
 #include "core/dataset.h"
 #include "core/output.h"
 #include "experiments/evaluate_trajectory.h"
+#include "experiments/imu_axis_record.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
 
@@ -117,8 +118,8 @@ TEST(Run, SameConfigGivesIdenticalFilesWithoutASolverTimeCap) {
       With(kTiny, {"estimator.solver.max_time_s=0", "glitch.enabled=true", "detector.type=dtw"});
   RunToDirectory(kPaper, overrides, RunOptions{}, tmp.path() / "a", false);
   RunToDirectory(kPaper, overrides, RunOptions{}, tmp.path() / "b", false);
-  for (const char* f :
-       {"config.yaml", "stamped_groundtruth.txt", "stamped_traj_estimate.txt", "detections.csv"})
+  for (const char* f : {"config.yaml", "stamped_groundtruth.txt", "stamped_traj_estimate.txt",
+                        "detections.csv", "landmarks.csv", "imu_axis.csv"})
     EXPECT_EQ(ReadFile(tmp.path() / "a" / f), ReadFile(tmp.path() / "b" / f)) << f;
   auto a = nlohmann::json::parse(ReadFile(tmp.path() / "a" / "metrics.json"));
   auto b = nlohmann::json::parse(ReadFile(tmp.path() / "b" / "metrics.json"));
@@ -129,16 +130,47 @@ TEST(Run, SameConfigGivesIdenticalFilesWithoutASolverTimeCap) {
   EXPECT_EQ(a, b);
 }
 
-TEST(Run, NoTrajectoriesWritesOnlyConfigAndMetrics) {
+std::vector<std::string> FileNames(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(Run, NoTrajectoriesNoFigureDataWritesOnlyConfigAndMetrics) {
   TempDir tmp;
   RunOptions options;
   options.write_trajectories = false;
+  options.write_figure_data = false;
   RunToDirectory(kPaper, With(kTiny, {"detector.type=hampel"}), options, tmp.path() / "run", false);
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(tmp.path() / "run"))
-    names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"config.yaml", "metrics.json"}));
+  EXPECT_EQ(FileNames(tmp.path() / "run"), (std::vector<std::string>{"config.yaml", "metrics.json"}));
+}
+
+// detections.csv only when a detector ran; the figure data (landmarks, the glitched IMU axis raw / clean /
+// mitigated with the flags) always, unless switched off.
+TEST(Run, WritesFigureDataAndDetectionsOnlyWithADetector) {
+  TempDir tmp;
+  RunToDirectory(kPaper, With(kTiny, {"glitch.enabled=true", "glitch.axes=[wy]"}), RunOptions{},
+                 tmp.path() / "none", false);
+  EXPECT_EQ(FileNames(tmp.path() / "none"),
+            (std::vector<std::string>{"config.yaml", "imu_axis.csv", "landmarks.csv", "metrics.json",
+                                      "stamped_groundtruth.txt", "stamped_traj_estimate.txt"}));
+  const ImuAxisRecord none = ReadImuAxisCsv((tmp.path() / "none" / "imu_axis.csv").string());
+  EXPECT_EQ(none.axis, ImuAxis::kWy);
+  EXPECT_EQ(none.mitigated, none.raw);
+  EXPECT_NE(none.clean, none.raw);
+  RunOptions no_trajectories;
+  no_trajectories.write_trajectories = false;
+  RunToDirectory(kPaper, With(kTiny, {"glitch.enabled=true", "detector.type=threshold"}), no_trajectories,
+                 tmp.path() / "threshold", false);
+  EXPECT_EQ(FileNames(tmp.path() / "threshold"),
+            (std::vector<std::string>{"config.yaml", "imu_axis.csv", "landmarks.csv", "metrics.json"}));
+  const ImuAxisRecord threshold = ReadImuAxisCsv((tmp.path() / "threshold" / "imu_axis.csv").string());
+  EXPECT_EQ(threshold.axis, ImuAxis::kAz);
+  EXPECT_NE(threshold.mitigated, threshold.raw);
+  int flagged = 0;
+  for (uint8_t f : threshold.flagged) flagged += f;
+  EXPECT_GT(flagged, 0);
 }
 
 TEST(Run, BadInputWritesNothing) {

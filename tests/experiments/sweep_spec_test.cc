@@ -126,6 +126,11 @@ TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
   const SweepSpec ci = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/ci_sweep.yaml");
   EXPECT_EQ(ci.run_count(), 18u);
   EXPECT_FALSE(ci.write_trajectories);
+  EXPECT_FALSE(ci.write_figure_data);    // the accuracy gate keeps its runs small
+  EXPECT_TRUE(paper.write_figure_data);  // the paper's figures draw what its runs recorded
+  EXPECT_NE(ResolvedSweepYaml(ci).find("write_figure_data: false"), std::string::npos);
+  // The default is left out, so that a paper sweep started before the key existed still resumes.
+  EXPECT_EQ(ResolvedSweepYaml(paper).find("write_figure_data"), std::string::npos);
 }
 
 }  // namespace

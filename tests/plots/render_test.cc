@@ -1,12 +1,15 @@
 // Figures of synthetic run, sweep and dataset directories: files, sizes, content, determinism, errors.
 #include "plots/render.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <gtest/gtest.h>
 
 #include "core/dataset.h"
 #include "core/output.h"
+#include "detectors/detector.h"
+#include "experiments/imu_axis_record.h"
 #include "experiments/run_command.h"
 #include "plots/image.h"
 #include "plots/run_data.h"
@@ -137,9 +140,11 @@ TEST(RenderRun, RealRunDirectory) {
   }
 }
 
-// A run made from a recorded dataset is plotted from that recording, not from a re-simulation of its
-// config.yaml (here the recording was simulated with another seed, so the two differ).
-TEST(RenderRun, DatasetRunIsPlottedFromItsRecording) {
+// A run records what its figures draw: the recorded IMU axis (raw, clean, the mitigation the run applied,
+// its flags) and the landmarks of the recording it consumed (here a dataset simulated with another seed than
+// the config's, so a re-simulation would differ). The run directory alone renders the same figures after
+// the dataset is gone and the directory has moved.
+TEST(RenderRun, DatasetRunIsPlottedFromWhatItRecorded) {
   vigil::testing::TempDir tmp;
   const std::string paper = std::string(VIGIL_SOURCE_DIR) + "/configs/paper.yaml";
   const std::vector<std::string> overrides = {"duration_s=3", "glitch.enabled=true", "glitch.mean=3",
@@ -148,30 +153,80 @@ TEST(RenderRun, DatasetRunIsPlottedFromItsRecording) {
   sim::SimulateToDirectory(config.sim, 9, config::ToYaml(config), tmp.path() / "ds", false);
   experiments::RunOptions options;
   options.dataset_dir = tmp.path() / "ds";
-  const nlohmann::json metrics =
-      experiments::RunToDirectory(paper, overrides, options, tmp.path() / "run", false);
-  EXPECT_EQ(metrics["dataset"], fs::absolute(tmp.path() / "ds").lexically_normal().string());
+  experiments::RunToDirectory(paper, overrides, options, tmp.path() / "run", false);
 
-  const RunData run = LoadRunDirectory(tmp.path() / "run");
-  const Dataset recording = RecordingOf(run);
   const Dataset recorded = ReadDataset(tmp.path() / "ds");
-  const Dataset resimulated = sim::Simulate(config.sim, config.seed);
-  ASSERT_EQ(recording.imu.size(), recorded.imu.size());
-  ASSERT_EQ(recording.imu.size(), resimulated.imu.size());
-  int differs = 0;
-  for (std::size_t i = 0; i < recording.imu.size(); ++i) {
-    EXPECT_EQ(recording.imu[i].a_B, recorded.imu[i].a_B) << i;
-    differs += recording.imu[i].a_B != resimulated.imu[i].a_B;
+  const experiments::ImuAxisRecord imu =
+      experiments::ReadImuAxisCsv((tmp.path() / "run" / experiments::kImuAxisFile).string());
+  const detectors::DetectionResult applied = detectors::DetectAndMitigate(config.detector, recorded.imu);
+  EXPECT_EQ(imu.axis, ImuAxis::kAz);
+  ASSERT_EQ(imu.raw.size(), recorded.imu.size());
+  ASSERT_EQ(imu.clean.size(), recorded.imu.size());
+  int flagged = 0;
+  for (std::size_t i = 0; i < imu.raw.size(); ++i) {
+    EXPECT_EQ(imu.t_ns[i], recorded.imu[i].t_ns);
+    EXPECT_EQ(imu.raw[i], recorded.imu[i].a_B.z()) << i;
+    EXPECT_EQ(imu.clean[i], recorded.imu_clean[i].a_B.z()) << i;
+    EXPECT_EQ(imu.mitigated[i], applied.cleaned[i].a_B.z()) << i;
+    EXPECT_EQ(imu.flagged[i], applied.flagged[i]) << i;
+    flagged += imu.flagged[i];
   }
-  EXPECT_GT(differs, 0);
-  EXPECT_EQ(RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small()).size(), 5u);
+  EXPECT_GT(flagged, 0);
+  EXPECT_EQ(ReadLandmarksCsv((tmp.path() / "run" / "landmarks.csv").string()).size(),
+            recorded.landmarks.size());
 
-  // Without its recording the run cannot be plotted faithfully: a clear error, no figure.
+  const auto first = RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small());
+  ASSERT_EQ(first.size(), 5u);
   fs::remove_all(tmp.path() / "ds");
+  fs::create_directories(tmp.path() / "elsewhere");
+  fs::rename(tmp.path() / "run", tmp.path() / "elsewhere" / "run");  // same name: figure 1's title has it
+  const auto again = RenderRunFigures(tmp.path() / "elsewhere" / "run", tmp.path() / "figs2", Small());
+  ASSERT_EQ(Names(again), Names(first));
+  for (std::size_t i = 0; i < first.size(); ++i) EXPECT_EQ(ReadFile(again[i]), ReadFile(first[i])) << i;
+}
+
+// A run directory without figure data (an older vigil, --no-figure-data): the figures that need it are
+// skipped with one line each, the others are drawn; nothing is re-simulated.
+TEST(RenderRun, RunWithoutFigureDataSkipsThoseFigures) {
+  vigil::testing::TempDir tmp;
+  const auto config = testing::SyntheticConfig({true, 3.0, 1.0}, detectors::DetectorType::kThreshold, 7, 3.0);
+  testing::WriteSyntheticRun(tmp.path() / "run", config, sim::Simulate(config.sim, config.seed),
+                             /*failed=*/false, /*with_figure_data=*/false);
+  ::testing::internal::CaptureStderr();
+  const auto written = RenderRunFigures(tmp.path() / "run", tmp.path() / "figs", Small());
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(Names(written), (std::vector<std::string>{"fig3_trajectories.png", "fig4_relative_error.png"}));
+  EXPECT_NE(err.find("vigil: fig1_scenario.png skipped: " + (tmp.path() / "run" / "landmarks.csv").string() +
+                     " missing"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("vigil: fig2_glitches.png skipped: "), std::string::npos) << err;
+  EXPECT_NE(err.find("vigil: fig5_detection.png skipped: " + (tmp.path() / "run" / "imu_axis.csv").string()),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 3);
+
+  // A sweep of such runs: figures 1, 2 and 5 skipped the same way.
+  fs::create_directories(tmp.path() / "sweep" / "runs");
+  fs::rename(tmp.path() / "run", tmp.path() / "sweep" / "runs" / "r000");
+  ::testing::internal::CaptureStderr();
+  const auto sweep = RenderSweepFigures(tmp.path() / "sweep", Small());
+  const std::string sweep_err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(Names(sweep), (std::vector<std::string>{"fig3_trajectories.png", "fig4_relative_error.png",
+                                                    "fig6_summary.png"}));
+  EXPECT_EQ(std::count(sweep_err.begin(), sweep_err.end(), '\n'), 3) << sweep_err;
+}
+
+// A bad figure-data file is an input error naming it, not a skipped figure.
+TEST(RenderRun, BadImuAxisNamesTheFile) {
+  vigil::testing::TempDir tmp;
+  const auto config = testing::SyntheticConfig({true, 3.0, 1.0}, detectors::DetectorType::kThreshold, 7, 3.0);
+  testing::WriteSyntheticRun(tmp.path() / "run", config, sim::Simulate(config.sim, config.seed));
+  WriteFileAtomic(tmp.path() / "run" / "imu_axis.csv",
+                  "#timestamp [ns],raw az,mitigated az,flagged\n1,2,3,4\n");
   const std::string error =
       vigil::testing::InputErrorOf([&] { RenderRunFigures(tmp.path() / "run", tmp.path() / "f", Small()); });
-  EXPECT_NE(error.find("metrics.json: dataset: "), std::string::npos) << error;
-  EXPECT_FALSE(fs::exists(tmp.path() / "f" / "fig1_scenario.png"));
+  EXPECT_NE(error.find("imu_axis.csv:2: flagged: must be 0 or 1"), std::string::npos) << error;
 }
 
 TEST(RenderRun, BadMetricsNamesTheFile) {

@@ -18,6 +18,7 @@
 #include "core/output.h"
 #include "core/random.h"
 #include "detectors/detector.h"
+#include "experiments/imu_axis_record.h"
 #include "experiments/run_config.h"
 #include "sim/simulator.h"
 
@@ -53,9 +54,10 @@ inline nlohmann::json Stats(double mean, double spread) {
 }
 
 // Writes `dir` (created) as a run directory of `config`; `data` is a simulation of a config with the same
-// trajectory and duration (shared between runs to keep tests fast). `failed` writes a failed run.
+// trajectory and duration (shared between runs to keep tests fast). `failed` writes a failed run;
+// `with_figure_data` false leaves out landmarks.csv and imu_axis.csv (a run of an older vigil).
 inline void WriteSyntheticRun(const std::filesystem::path& dir, experiments::RunConfig config,
-                              const Dataset& data, bool failed = false) {
+                              const Dataset& data, bool failed = false, bool with_figure_data = true) {
   std::filesystem::create_directories(dir);
   WriteFileAtomic(dir / "config.yaml", config::ToYaml(config));
   const double method_factor = config.detector.type == detectors::DetectorType::kNone        ? 1.0
@@ -96,15 +98,24 @@ inline void WriteSyntheticRun(const std::filesystem::path& dir, experiments::Run
     metrics["relative"] = relative;
   }
   WriteFileAtomic(dir / "metrics.json", metrics.dump(2));
+  // Flags: the glitched samples of `data` (none without a detector); mitigation: their clean values.
+  std::vector<uint8_t> flagged(data.imu.size(), 0);
+  ImuStream mitigated = data.imu;
   if (config.detector.type != detectors::DetectorType::kNone) {
-    // Flags: the glitched samples of `data`.
-    std::vector<uint8_t> flagged(data.imu.size(), 0);
     std::size_t g = 0;
     for (std::size_t i = 0; i < data.imu.size(); ++i) {
       while (g < data.glitches.size() && data.glitches[g].t_ns <= data.imu[i].t_ns)
         flagged[i] |= data.glitches[g++].t_ns == data.imu[i].t_ns;
+      if (flagged[i]) mitigated[i] = data.imu_clean[i];
     }
     WriteFileAtomic(dir / "detections.csv", detectors::DetectionsCsv(data.imu, flagged));
+  }
+  if (with_figure_data) {
+    WriteFileAtomic(dir / dataset_files::kLandmarks, LandmarksCsv(data.landmarks));
+    WriteFileAtomic(dir / experiments::kImuAxisFile,
+                    experiments::ImuAxisCsv(experiments::MakeImuAxisRecord(
+                        config.sim.glitch.axes.empty() ? ImuAxis::kAz : config.sim.glitch.axes.front(),
+                        data.imu, &data.imu_clean, mitigated, flagged)));
   }
 }
 
