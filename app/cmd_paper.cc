@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/config_dir.h"
 #include "app/sweep_args.h"
 #include "plots/render.h"
 
@@ -16,7 +17,7 @@ void AddPaperCommand(CLI::App& root) {
       "the paper's simulation experiment: glitch settings x {trunc, dtw, original, hampel} x seeds, then "
       "tables 2-4, summary.md (with the published numbers beside ours) and figures/*.png");
   struct Args {
-    std::string sweep = std::string(VIGIL_CONFIG_DIR) + "/paper_sweep.yaml";
+    std::string sweep;  // empty: the shipped configs/paper_sweep.yaml (app/config_dir.h)
     long long seeds = 10;
     SweepArgs run;
   };
@@ -25,9 +26,12 @@ void AddPaperCommand(CLI::App& root) {
   cmd->add_option("--seeds", args->seeds, "seeds per cell (1, 2, ... N)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--sweep", args->sweep, "the sweep file")->capture_default_str();
+  cmd->add_option("--sweep", args->sweep,
+                  "the sweep file (default: paper_sweep.yaml of the configs installed beside the binary, "
+                  "<prefix>/share/vigil/configs, or of the source tree for the build tree's binary)");
   SetAction(cmd, [args] {
-    experiments::SweepSpec spec = experiments::LoadSweepSpec(args->sweep);
+    const std::string sweep = args->sweep.empty() ? ShippedConfig("paper_sweep.yaml") : args->sweep;
+    experiments::SweepSpec spec = experiments::LoadSweepSpec(sweep);
     experiments::SetSeedCount(&spec, static_cast<uint64_t>(args->seeds));
     const int status = args->run.Run(spec, "paper");
     const auto figures = plots::RenderSweepFigures(args->run.output, plots::FigureOptions{});
