@@ -9,12 +9,11 @@
 #include <Eigen/QR>
 
 #include "core/so3.h"
+#include "estimator/normal_equations.h"
 #include "estimator/pose_manifold.h"
 
 namespace vigil::estimator {
 namespace {
-
-using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
 void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, RowMajorMatrix* J) {
@@ -76,102 +75,6 @@ Eigen::MatrixXd PseudoInverse(const Eigen::MatrixXd& A, double threshold) {
   return es.eigenvectors() * inv.matrix().asDiagonal() * es.eigenvectors().transpose();
 }
 
-// A parameter block of the normal equations. Uncoupled dropped scalars (see marginalization.h) have a sparse
-// row of their own (`scalar`); every other block has columns in the dense part (`column`), the other dropped
-// blocks first.
-struct Column {
-  double* address = nullptr;
-  int ambient = 0;
-  int tangent = 0;
-  bool dropped = false;
-  bool coupled = false;  // a dropped 1-D block that cannot be a scalar pivot
-  int scalar = -1;
-  int column = -1;
-};
-
-// Normal equations split as described above: H, b over the dense columns, of which H holds the blocks on
-// and above the diagonal only (the lower ones are never read); per scalar s its diagonal entry h[s], its row
-// Hs.row(s) over the dense columns, the dense blocks that row reaches (`reach[s]`, indices into the columns)
-// and its gradient bs[s].
-struct NormalEquations {
-  Eigen::MatrixXd H;
-  RowMajorMatrix Hs;
-  Eigen::VectorXd b, h, bs;
-  std::vector<std::vector<int>> reach;
-
-  // `dense` columns in `dense_blocks` blocks.
-  void Resize(int scalars, int dense, int dense_blocks) {
-    H = Eigen::MatrixXd::Zero(dense, dense);
-    b = Eigen::VectorXd::Zero(dense);
-    Hs = Eigen::MatrixXd::Zero(scalars, dense);
-    h = Eigen::VectorXd::Zero(scalars);
-    bs = Eigen::VectorXd::Zero(scalars);
-    reach.assign(scalars, {});
-    for (std::vector<int>& r : reach) r.reserve(dense_blocks);
-  }
-  // Adds a term's J^T J and J^T r, whose columns are those of `indices` (into `columns`) in that order.
-  void AddTerm(const std::vector<Column>& columns, const std::vector<int>& indices,
-               const Eigen::MatrixXd& JtJ, const Eigen::VectorXd& Jtr) {
-    for (std::size_t k = 0, ck = 0; k < indices.size(); ++k) {
-      const Column& a = columns[indices[k]];
-      AddGradient(a, Jtr, static_cast<int>(ck));
-      for (std::size_t l = 0, cl = 0; l < indices.size(); ++l) {
-        const Column& c = columns[indices[l]];
-        Add(a, c, indices[l], JtJ, static_cast<int>(ck), static_cast<int>(cl));
-        cl += c.tangent;
-      }
-      ck += a.tangent;
-    }
-  }
-  // Adds the block (k, l) of a term's J^T J whose columns start at ck, cl (l is the column l_index).
-  void Add(const Column& k, const Column& l, int l_index, const Eigen::MatrixXd& JtJ, int ck, int cl) {
-    if (k.scalar >= 0 && l.scalar >= 0) {
-      h[k.scalar] += JtJ(ck, cl);  // the same scalar: uncoupled scalars share no term
-    } else if (k.scalar >= 0) {
-      Hs.row(k.scalar).segment(l.column, l.tangent) += JtJ.block(ck, cl, 1, l.tangent);
-      std::vector<int>& r = reach[k.scalar];
-      if (std::find(r.begin(), r.end(), l_index) == r.end()) r.push_back(l_index);
-    } else if (l.scalar < 0 && k.column <= l.column) {
-      if (k.tangent == kPoseTangentSize && l.tangent == kPoseTangentSize)  // pose x pose: fixed size
-        H.block<kPoseTangentSize, kPoseTangentSize>(k.column, l.column) +=
-            JtJ.block<kPoseTangentSize, kPoseTangentSize>(ck, cl);
-      else
-        H.block(k.column, l.column, k.tangent, l.tangent) += JtJ.block(ck, cl, k.tangent, l.tangent);
-    }
-  }
-  void AddGradient(const Column& k, const Eigen::VectorXd& Jtr, int ck) {
-    if (k.scalar >= 0)
-      bs[k.scalar] += Jtr[ck];
-    else
-      b.segment(k.column, k.tangent) += Jtr.segment(ck, k.tangent);
-  }
-  bool AllFinite() const {
-    return H.allFinite() && b.allFinite() && Hs.allFinite() && h.allFinite() && bs.allFinite();
-  }
-  // Eliminates every scalar with a pivot above `threshold` (the others count as zero), block by block over
-  // the dense blocks its row reaches.
-  void EliminateScalars(const std::vector<Column>& columns, double threshold) {
-    for (int s = 0; s < static_cast<int>(h.size()); ++s) {
-      if (!(h[s] > threshold)) continue;
-      for (const int i : reach[s]) {
-        const Column& a = columns[i];
-        const auto f = (Hs.row(s).segment(a.column, a.tangent) / h[s]).transpose().eval();
-        b.segment(a.column, a.tangent) -= f * bs[s];
-        for (const int j : reach[s]) {
-          const Column& c = columns[j];
-          if (a.column > c.column) continue;
-          if (a.tangent == kPoseTangentSize && c.tangent == kPoseTangentSize)  // pose x pose: fixed size
-            H.block<kPoseTangentSize, kPoseTangentSize>(a.column, c.column).noalias() -=
-                f.head<kPoseTangentSize>() * Hs.row(s).segment<kPoseTangentSize>(c.column);
-          else
-            H.block(a.column, c.column, a.tangent, c.tangent).noalias() -=
-                f * Hs.row(s).segment(c.column, c.tangent);
-        }
-      }
-    }
-  }
-};
-
 // The kept blocks' Schur complement A, bk in square-root and information form (J, r, H, g of `prior`):
 // Cholesky of A with a ridge, J_p = L^T, r_p = L^-1 bk. The ridge makes the unobservable gauge directions
 // factorizable: `eigen_threshold` plus kRelativeRidge of A's largest diagonal entry, at the level of the
@@ -219,19 +122,21 @@ bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double 
   return true;
 }
 
-}  // namespace
-
-bool LinearPrior::Involves(const double* address) const {
-  for (const Block& b : blocks)
-    if (b.address == address) return true;
-  return false;
-}
-
-bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
-  // Blocks in order of first appearance: the previous prior's, then the terms'.
+// The columns of a marginalization: every block in order of first appearance (the previous prior's, then
+// the terms'), the uncoupled dropped scalars numbered first, then the other dropped blocks' dense columns
+// (m of them), then the kept blocks' (n).
+struct Layout {
   std::vector<Column> columns;
   std::unordered_map<const double*, int> index_of;
+  std::vector<std::vector<int>> term_columns;  // per term: its blocks' indices into columns
+  int scalars = 0, m = 0, n = 0;
+};
+
+Layout LayOut(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+              const std::set<const double*>& dropped) {
+  Layout layout;
+  std::vector<Column>& columns = layout.columns;
+  std::unordered_map<const double*, int>& index_of = layout.index_of;
   auto add = [&](double* address, int ambient) {
     if (!index_of.emplace(address, static_cast<int>(columns.size())).second) return;
     Column c;
@@ -244,7 +149,8 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   };
   if (previous != nullptr)
     for (const LinearPrior::Block& b : previous->blocks) add(b.address, b.size);
-  std::vector<std::vector<int>> term_columns(terms.size());
+  std::vector<std::vector<int>>& term_columns = layout.term_columns;
+  term_columns.resize(terms.size());
   for (std::size_t t = 0; t < terms.size(); ++t) {
     const std::vector<int32_t>& sizes = terms[t].cost->parameter_block_sizes();
     term_columns[t].reserve(terms[t].blocks.size());
@@ -259,7 +165,7 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       for (const int i : term_columns[t])
         if (columns[i].tangent == 1) columns[i].coupled = true;
   }
-  int scalars = 0, m = 0, n = 0;
+  int &scalars = layout.scalars, &m = layout.m, &n = layout.n;
   for (Column& c : columns)
     if (c.dropped && c.tangent == 1 && !c.coupled) c.scalar = scalars++;
   for (Column& c : columns)
@@ -272,31 +178,35 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       c.column = m + n;
       n += c.tangent;
     }
-  if (n == 0) return false;
+  return layout;
+}
 
-  NormalEquations eq;
-  eq.Resize(scalars, m + n, static_cast<int>(columns.size()) - scalars);
-  if (previous != nullptr) {
-    // The prior at the current values: J_x = J D, r_x = r + J dx with D = diag(I, Jr_inv per rotation), so
-    // J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
-    std::vector<const double*> values;
-    for (const LinearPrior::Block& b : previous->blocks) values.push_back(b.address);
-    const PriorOffset o = OffsetOf(*previous, 0, values.data());
-    Eigen::MatrixXd H = previous->H;
-    Eigen::VectorXd g = previous->g + previous->H * o.dx;
-    for (std::size_t k = 0, c = 0; k < previous->blocks.size(); ++k) {
-      if (previous->blocks[k].size == kPoseSize) {
-        H.middleCols<3>(c + 3) = H.middleCols<3>(c + 3) * o.Jr_inv[k];
-        H.middleRows<3>(c + 3) = o.Jr_inv[k].transpose() * H.middleRows<3>(c + 3);
-        g.segment<3>(c + 3) = o.Jr_inv[k].transpose() * g.segment<3>(c + 3);
-      }
-      c += previous->blocks[k].tangent;
+// Adds the previous prior at the blocks' current values: J_x = J D, r_x = r + J dx with D = diag(I, Jr_inv
+// per rotation), so J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
+void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalEquations* eq) {
+  std::vector<const double*> values;
+  for (const LinearPrior::Block& b : previous.blocks) values.push_back(b.address);
+  const PriorOffset o = OffsetOf(previous, 0, values.data());
+  Eigen::MatrixXd H = previous.H;
+  Eigen::VectorXd g = previous.g + previous.H * o.dx;
+  for (std::size_t k = 0, c = 0; k < previous.blocks.size(); ++k) {
+    if (previous.blocks[k].size == kPoseSize) {
+      H.middleCols<3>(c + 3) = H.middleCols<3>(c + 3) * o.Jr_inv[k];
+      H.middleRows<3>(c + 3) = o.Jr_inv[k].transpose() * H.middleRows<3>(c + 3);
+      g.segment<3>(c + 3) = o.Jr_inv[k].transpose() * g.segment<3>(c + 3);
     }
-    std::vector<int> indices;
-    for (const LinearPrior::Block& b : previous->blocks) indices.push_back(index_of.at(b.address));
-    eq.AddTerm(columns, indices, H, g);
+    c += previous.blocks[k].tangent;
   }
+  std::vector<int> indices;
+  for (const LinearPrior::Block& b : previous.blocks) indices.push_back(layout.index_of.at(b.address));
+  eq->AddTerm(layout.columns, indices, H, g);
+}
 
+// Evaluates every term at the current values (robust loss applied) and adds its J^T J and J^T r; false when a
+// cost function fails.
+bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layout, NormalEquations* eq) {
+  const std::vector<Column>& columns = layout.columns;
+  const std::vector<std::vector<int>>& term_columns = layout.term_columns;
   Eigen::VectorXd r;
   RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
   Eigen::MatrixXd JtJ;
@@ -337,15 +247,18 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
       JtJ.noalias() = J.transpose() * J;
     }
     Jtr.noalias() = J.transpose() * r;
-    eq.AddTerm(columns, term_columns[t], JtJ, Jtr);
+    eq->AddTerm(columns, term_columns[t], JtJ, Jtr);
   }
-  if (!eq.AllFinite()) return false;
+  return true;
+}
 
-  eq.EliminateScalars(columns, eigen_threshold);
-  // The other dropped blocks: pseudo-inverse by eigen-decomposition.
+// The kept blocks' Schur complement A, bk of the dense equations (scalars already eliminated): the other
+// dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition.
+void EliminateDenseDropped(const NormalEquations& eq, int m, int n, double eigen_threshold,
+                           Eigen::MatrixXd* A, Eigen::VectorXd* bk) {
   const Eigen::MatrixXd& H = eq.H;
-  Eigen::MatrixXd A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
-  Eigen::VectorXd bk = eq.b.tail(n);
+  *A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
+  *bk = eq.b.tail(n);
   if (m > 0) {
     const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
     // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
@@ -354,11 +267,14 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
             ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
             : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
     const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
-    A.noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
-    bk.noalias() -= Hkm_Hmm_inv * eq.b.head(m);
+    A->noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
+    bk->noalias() -= Hkm_Hmm_inv * eq.b.head(m);
   }
-  if (!SquareRootForm(A, bk, eigen_threshold, prior)) return false;
-  prior->blocks.clear();
+}
+
+// The kept blocks with their current values as the prior's linearization point x0.
+std::vector<LinearPrior::Block> KeptBlocks(const std::vector<Column>& columns) {
+  std::vector<LinearPrior::Block> blocks;
   for (const Column& c : columns) {
     if (c.dropped) continue;
     LinearPrior::Block block;
@@ -366,8 +282,33 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
     block.size = c.ambient;
     block.tangent = c.tangent;
     block.x0.assign(c.address, c.address + c.ambient);
-    prior->blocks.push_back(std::move(block));
+    blocks.push_back(std::move(block));
   }
+  return blocks;
+}
+
+}  // namespace
+
+bool LinearPrior::Involves(const double* address) const {
+  for (const Block& b : blocks)
+    if (b.address == address) return true;
+  return false;
+}
+
+bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
+  const Layout layout = LayOut(previous, terms, dropped);
+  if (layout.n == 0) return false;
+  NormalEquations eq;
+  eq.Resize(layout.scalars, layout.m + layout.n, static_cast<int>(layout.columns.size()) - layout.scalars);
+  if (previous != nullptr) AddPreviousPrior(*previous, layout, &eq);
+  if (!AddTerms(terms, layout, &eq) || !eq.AllFinite()) return false;
+  eq.EliminateScalars(layout.columns, eigen_threshold);
+  Eigen::MatrixXd A;
+  Eigen::VectorXd bk;
+  EliminateDenseDropped(eq, layout.m, layout.n, eigen_threshold, &A, &bk);
+  if (!SquareRootForm(A, bk, eigen_threshold, prior)) return false;
+  prior->blocks = KeptBlocks(layout.columns);
   return prior->J.allFinite() && prior->r.allFinite();
 }
 
