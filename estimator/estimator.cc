@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "core/format.h"
@@ -53,16 +55,17 @@ Estimator::Estimator(const EstimatorOptions& options, const CameraModel& camera,
       imu_rate_hz_(imu_rate_hz),
       initializer_(std::move(initializer)),
       features_(options.features),
+      reprojection_factors_(T_BC_, camera.fx / options.features.pixel_std_px),
       loss_(options.features.cauchy_scale) {}
 
 Estimator::~Estimator() = default;
 
 NavState Estimator::newest_state() const { return window_.back()->State(); }
 
-const Estimator::Frame& Estimator::FrameById(uint64_t id) const {
+Estimator::Frame& Estimator::FrameById(uint64_t id) {
   for (const auto& f : window_)
     if (f->id == id) return *f;
-  return *window_.back();  // unreachable for ids of window frames
+  throw std::logic_error("Estimator::FrameById: frame " + std::to_string(id) + " is not in the window");
 }
 
 Eigen::Isometry3d Estimator::T_WC(const Frame& f) const {
@@ -74,26 +77,8 @@ Eigen::Isometry3d Estimator::T_WC(const Frame& f) const {
 
 void Estimator::AppendReprojectionTerms(int id, const FeatureTrack& track, double* inv_depth,
                                         std::vector<ReprojectionTerm>* terms) {
-  const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
-  const auto& [anchor_id, n_anchor] = track.observations.front();
-  double* anchor_pose = const_cast<double*>(FrameById(anchor_id).pose);
-  // Reuse the cached factor of every (anchor, frame) pair still observed (both lists are oldest first).
-  std::vector<TrackFactor>& cached = track_factors_[id];
-  std::vector<TrackFactor> current;
-  current.reserve(track.observations.size() - 1);
-  std::size_t c = 0;
-  for (std::size_t k = 1; k < track.observations.size(); ++k) {
-    const auto& [frame_id, n] = track.observations[k];
-    while (c < cached.size() && cached[c].anchor_frame == anchor_id && cached[c].frame < frame_id) ++c;
-    if (c < cached.size() && cached[c].anchor_frame == anchor_id && cached[c].frame == frame_id)
-      current.push_back(std::move(cached[c]));
-    else
-      current.push_back(
-          {anchor_id, frame_id, std::make_unique<ReprojectionFactor>(n_anchor, n, T_BC_, sqrt_information)});
-    terms->push_back({current.back().factor.get(),
-                      {anchor_pose, const_cast<double*>(FrameById(frame_id).pose), inv_depth}});
-  }
-  cached = std::move(current);
+  reprojection_factors_.AppendTerms(
+      id, track, [this](uint64_t frame_id) { return FrameById(frame_id).pose; }, inv_depth, terms);
 }
 
 CameraPoseLookup Estimator::CameraPoses() const {
@@ -103,7 +88,7 @@ CameraPoseLookup Estimator::CameraPoses() const {
   return [poses = std::move(poses)](uint64_t id) {
     for (const auto& [frame_id, T] : poses)
       if (frame_id == id) return T;
-    return poses.back().second;  // unreachable for ids of window frames
+    throw std::logic_error("Estimator::CameraPoses: frame " + std::to_string(id) + " is not in the window");
   };
 }
 
@@ -229,7 +214,7 @@ std::string Estimator::DetectFailure(const Eigen::Vector3d& previous_p_W) const 
 void Estimator::Reset() {
   window_.clear();
   features_.Clear();
-  track_factors_.clear();
+  reprojection_factors_.Clear();
   prior_.reset();
   bias_prior_.reset();
   initialized_ = false;

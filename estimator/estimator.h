@@ -34,6 +34,7 @@
 #include "estimator/pose_manifold.h"
 #include "estimator/preintegration.h"
 #include "estimator/reprojection_factor.h"
+#include "estimator/reprojection_factor_cache.h"
 
 namespace vigil::estimator {
 
@@ -88,18 +89,16 @@ class Estimator {
   void MarginalizeSecondNewest(bool with_prior);
   void Reset();
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
-  // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it). The
-  // factors are owned by track_factors_: one lives while the track keeps its anchor and that observation.
-  struct ReprojectionTerm {
-    ReprojectionFactor* factor;
-    std::array<double*, 3> blocks;
-  };
+  // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it), from
+  // reprojection_factors_.
+  using ReprojectionTerm = ReprojectionFactorCache::Term;
   void AppendReprojectionTerms(int id, const FeatureTrack& track, double* inv_depth,
                                std::vector<ReprojectionTerm>* terms);
   Eigen::Isometry3d T_WC(const Frame& frame) const;
-  // T_WC of every window frame by id, as of this call.
+  // T_WC of every window frame by id, as of this call (std::logic_error for another id).
   CameraPoseLookup CameraPoses() const;
-  const Frame& FrameById(uint64_t id) const;
+  // The window frame `id` (std::logic_error when it is not in the window).
+  Frame& FrameById(uint64_t id);
   int WindowCapacity() const { return options_.window.size + 1; }
 
   EstimatorOptions options_;
@@ -117,14 +116,8 @@ class Estimator {
   // that frame is marginalized (its information then moves into prior_). Only MarginalizeOldest and Reset
   // remove the oldest frame, and both drop this prior, so while it exists it belongs to window_.front().
   std::unique_ptr<BiasPriorFactor> bias_prior_;
-  // Each track's reprojection factors, kept across frames (a factor depends only on the anchor observation
-  // and its own, which never change; frame ids are never reused); pruned to the live tracks by Optimize.
-  struct TrackFactor {
-    uint64_t anchor_frame = 0;
-    uint64_t frame = 0;
-    std::unique_ptr<ReprojectionFactor> factor;
-  };
-  std::map<int, std::vector<TrackFactor>> track_factors_;
+  // Each track's reprojection factors, kept across frames; pruned to the live tracks by Optimize.
+  ReprojectionFactorCache reprojection_factors_;
   ceres::CauchyLoss loss_;
   PoseManifold pose_manifold_;
 

@@ -141,8 +141,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   for (const ReprojectionTerm& term : reprojections)
     problem.AddResidualBlock(term.factor, &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
   // Drop the cached factors of tracks that no longer exist.
-  for (auto it = track_factors_.begin(); it != track_factors_.end();)
-    it = features_.tracks().count(it->first) ? std::next(it) : track_factors_.erase(it);
+  reprojection_factors_.KeepTracks(features_.tracks());
 
   const NavState oldest_before = window_.front()->State();
 
