@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,8 @@ class Estimator {
   const std::string& failure_reason() const { return failure_reason_; }
   int resets() const { return resets_; }
   int keyframes() const { return keyframes_; }
+  // Marginalizations that failed (nothing left to keep, or non-finite numbers): the prior was dropped.
+  int marginalization_failures() const { return marginalization_failures_; }
   const EstimatorTiming& timing() const { return timing_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
 
@@ -87,6 +90,9 @@ class Estimator {
   void Slide(bool marginalize_oldest, bool with_prior);
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
+  // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
+  // fails.
+  void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
   void Reset();
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it), from
@@ -127,6 +133,7 @@ class Estimator {
   std::string failure_reason_;
   int resets_ = 0;
   int keyframes_ = 0;
+  int marginalization_failures_ = 0;
   EstimatorTiming timing_;
 };
 

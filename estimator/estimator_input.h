@@ -53,9 +53,10 @@ struct EstimatorResult {
   std::vector<NavState> states;
   Trajectory trajectory;
   double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // time of the first successful init
-  int resets = 0;     // failure-detection resets (each followed by re-initialization)
-  int frames = 0;     // camera frames processed
-  int keyframes = 0;  // frames kept as keyframes (oldest marginalized)
+  int resets = 0;                    // failure-detection resets (each followed by re-initialization)
+  int frames = 0;                    // camera frames processed
+  int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
+  int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time
   EstimatorTiming timing;
 };
 

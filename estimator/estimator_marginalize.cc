@@ -7,11 +7,18 @@
 #include "estimator/imu_factor.h"
 
 namespace vigil::estimator {
-namespace {
 
-constexpr double kEigenThreshold = 1e-8;
-
-}  // namespace
+void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
+                          const std::set<const double*>& dropped) {
+  auto prior = std::make_shared<LinearPrior>();
+  if (Marginalize(prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold,
+                  prior.get())) {
+    prior_ = std::move(prior);
+  } else {
+    prior_.reset();
+    ++marginalization_failures_;
+  }
+}
 
 void Estimator::MarginalizeOldest(bool with_prior) {
   Frame& oldest = *window_.front();
@@ -35,11 +42,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     }
     for (const ReprojectionTerm& term : reprojections)
       terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
-    auto prior = std::make_shared<LinearPrior>();
-    if (Marginalize(prior_.get(), terms, dropped, kEigenThreshold, prior.get()))
-      prior_ = std::move(prior);
-    else
-      prior_.reset();
+    KeepPrior(terms, dropped);
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   features_.RemoveFrame(oldest.id, CameraPoses());
@@ -53,12 +56,7 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
   Frame& newest = *window_[n - 1];
   if (with_prior && prior_ &&
       (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
-    auto prior = std::make_shared<LinearPrior>();
-    if (Marginalize(prior_.get(), {}, {second_newest.pose, second_newest.speed_bias}, kEigenThreshold,
-                    prior.get()))
-      prior_ = std::move(prior);
-    else
-      prior_.reset();
+    KeepPrior({}, {second_newest.pose, second_newest.speed_bias});
   }
   // The newest frame's IMU now starts at the frame before the dropped one.
   if (second_newest.imu_from_prev) {

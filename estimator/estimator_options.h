@@ -37,6 +37,8 @@ struct WindowOptions {
   int min_tracked_features = 20;         // keyframe when fewer features are tracked into the newest frame
   double repropagate_accel_bias = 0.10;  // re-integrate an IMU factor when b_a moved this far [m/s^2]
   double repropagate_gyro_bias = 0.01;   // ... or b_g moved this far [rad/s]
+  double marginalization_eigen_threshold =
+      1e-8;  // information at or below this counts as none (marginalization.h)
 
   template <class V>
   void Visit(V& v) {
@@ -55,6 +57,10 @@ struct WindowOptions {
     v.Field("repropagate_gyro_bias", repropagate_gyro_bias,
             "re-integrate an IMU factor when its b_g estimate moved this far from the linearization point "
             "[rad/s]",
+            Bounds::Positive());
+    v.Field("marginalization_eigen_threshold", marginalization_eigen_threshold,
+            "marginalization: eigenvalues and pivots of the normal equations at or below this count as zero, "
+            "and the kept prior gets this ridge",
             Bounds::Positive());
   }
 };

@@ -66,6 +66,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   if (estimator.initialized_at_ns()) result.initialized_at_s = NsToS(*estimator.initialized_at_ns());
   result.resets = estimator.resets();
   result.keyframes = estimator.keyframes();
+  result.marginalization_failures = estimator.marginalization_failures();
   result.timing = estimator.timing();
   return result;
 }

@@ -28,6 +28,7 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                     {"resets", result.resets},
                     {"frames", result.frames},
                     {"keyframes", result.keyframes},
+                    {"marginalization_failures", result.marginalization_failures},
                     {"output_poses", result.trajectory.size()},
                     {"timing",
                      {{"optimize_s", t.optimize_s},
@@ -59,6 +60,11 @@ std::string RunSummaryLine(const nlohmann::json& m) {
                   MetricNumber(r, {"trans_m", "mean"}), MetricNumber(r, {"yaw_deg", "mean"}));
     s += buf;
   }
+  // A dropped marginalization prior (the window then holds only its own information) is said.
+  const int failures = m.contains("estimator") ? m["estimator"].value("marginalization_failures", 0) : 0;
+  if (failures > 0)
+    s += ", " + std::to_string(failures) + " failed marginalization" + (failures > 1 ? "s" : "") +
+         " (prior dropped)";
   std::snprintf(buf, sizeof(buf), ", detector %s, wall %.2f s",
                 m.at("detection").value("detector", std::string("none")).c_str(),
                 MetricNumber(m, {"wall_time_s", "total"}));

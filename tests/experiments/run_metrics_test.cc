@@ -32,6 +32,16 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
   const std::string line = RunSummaryLine(m);
   EXPECT_NE(line.find("failed (diverged: |b_a| > 2.5)"), std::string::npos) << line;
   EXPECT_NE(line.find("wall 1.50 s"), std::string::npos) << line;
+  EXPECT_EQ(m["estimator"]["marginalization_failures"], 0);
+  EXPECT_EQ(line.find("marginalization"), std::string::npos) << line;  // said only when one failed
+
+  // A failed marginalization (the prior was dropped) is counted and said.
+  result.marginalization_failures = 2;
+  const nlohmann::json dropped = RunMetricsJson(summary, result, TrajectoryEvaluation{}, detection);
+  EXPECT_EQ(dropped["estimator"]["marginalization_failures"], 2);
+  EXPECT_NE(RunSummaryLine(dropped).find(", 2 failed marginalizations (prior dropped), detector none"),
+            std::string::npos)
+      << RunSummaryLine(dropped);
 }
 
 }  // namespace
