@@ -292,6 +292,9 @@ TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
   const SweepOutcome o = RunSweep(spec, out, resume, SlowFakeExecutor(0));
   EXPECT_EQ(o.resumed + o.executed, 30u);
   EXPECT_EQ(o.resumed, committed);
+  // The killed helper's staging (its run directories, results.csv.tmp-<host>-<pid>) is gone.
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 
   SweepRunOptions straight;
   straight.threads = 1;
