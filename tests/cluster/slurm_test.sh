@@ -29,6 +29,21 @@ fail() {
   exit 1
 }
 
+# Bad input first (no Slurm needed): one line, exit 2, nothing written.
+expect_refused() {  # expect_refused WHAT COMMAND...: exit 2, one line on stderr, $work/bad not created
+  local what=$1 status=0 err
+  shift
+  err=$("$@" 2>&1 >/dev/null) || status=$?
+  [ $status -eq 2 ] || fail "$what: exit status $status, expected 2"
+  [ "$(echo "$err" | wc -l)" -eq 1 ] || fail "$what: more than one line: $err"
+  [ ! -e "$work/bad" ] || fail "$what: wrote $work/bad"
+}
+expect_refused "--shard 3/3" "$vigil" sweep configs/ci_sweep.yaml -o "$work/bad" --shard 3/3
+expect_refused "--shard 0/0" "$vigil" sweep configs/ci_sweep.yaml -o "$work/bad" --shard 0/0
+expect_refused "--tasks 0" "$vigil" slurm configs/ci_sweep.yaml -o "$work/bad" --tasks 0
+expect_refused "--submit without sbatch" env PATH=/nonexistent "$vigil" slurm configs/ci_sweep.yaml -o "$work/bad" \
+  --tasks 2 --submit
+
 if ! up_log=$(scripts/slurm-local up 2>&1); then
   echo "slurm test: SKIPPED: the local Slurm cluster cannot start here: $(echo "$up_log" | tail -1)"
   exit 77
