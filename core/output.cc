@@ -85,6 +85,8 @@ void WriteFileAtomic(const fs::path& path, const std::string& content) {
     if (!out) throw std::runtime_error(tmp.string() + ": write failed");
   }
   fs::rename(tmp, path);
+  // A killed earlier write of the same file left its staging: removed now (dead processes of this host only).
+  RemoveStaleStaging(path.has_parent_path() ? path.parent_path() : fs::path("."), path.filename().string());
 }
 
 bool WriteFileIfAbsent(const fs::path& path, const std::string& content) {

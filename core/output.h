@@ -34,7 +34,8 @@ class StagedDirectory {
 // Refuses (InputError) a non-empty existing directory unless `force`; otherwise creates it if missing.
 void PrepareOutputDirectory(const std::filesystem::path& dir, bool force);
 
-// Writes `content` to `path` via "<path>.tmp-<host>-<pid>" + rename. Refuses (InputError) to replace anything
+// Writes `content` to `path` via "<path>.tmp-<host>-<pid>" + rename, then removes the stale staging of `path`
+// (core/staging.h) that a killed earlier write left. Refuses (InputError) to replace anything
 // that is not a regular file (a directory, a device such as /dev/null, a FIFO). Throws std::runtime_error on
 // I/O failure.
 void WriteFileAtomic(const std::filesystem::path& path, const std::string& content);

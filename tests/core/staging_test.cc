@@ -92,5 +92,18 @@ TEST(Staging, StagedDirectoryRemovesTheStaleStagingOfItsOutput) {
   staged.Commit();
 }
 
+TEST(Staging, WriteFileAtomicRemovesTheStaleStagingOfItsFile) {
+  TempDir tmp;
+  const long dead = DeadPid();
+  const std::string stale = Name("templates.yaml", StagingHost(), dead);
+  const std::string live = Name("templates.yaml", StagingHost(), 1);
+  tmp.File(stale, "half");
+  tmp.File(live, "being written");
+  WriteFileAtomic(tmp.path() / "templates.yaml", "whole\n");
+  EXPECT_EQ(ReadFile(tmp.path() / "templates.yaml"), "whole\n");
+  EXPECT_FALSE(fs::exists(tmp.path() / stale));
+  EXPECT_TRUE(fs::exists(tmp.path() / live));
+}
+
 }  // namespace
 }  // namespace vigil
