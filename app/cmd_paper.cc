@@ -34,6 +34,8 @@ void AddPaperCommand(CLI::App& root) {
     experiments::SweepSpec spec = experiments::LoadSweepSpec(sweep);
     experiments::SetSeedCount(&spec, static_cast<uint64_t>(args->seeds));
     const int status = args->run.Run(spec, "paper");
+    // A shard's figures would show part of the sweep: `vigil tables DIR --figures` draws them at the end.
+    if (args->run.list || !args->run.Shard().whole()) return status;
     const auto figures = plots::RenderSweepFigures(args->run.output, plots::FigureOptions{});
     std::fprintf(stderr, "vigil paper: %zu figures -> %s\n", figures.size(),
                  (std::filesystem::path(args->run.output) / "figures").string().c_str());

@@ -39,5 +39,6 @@ void AddSweepCommand(CLI::App& root);
 void AddTablesCommand(CLI::App& root);
 void AddPaperCommand(CLI::App& root);
 void AddRegressCommand(CLI::App& root);
+void AddSlurmCommand(CLI::App& root);
 
 }  // namespace vigil::app

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   AddPaperCommand(root);
   AddTablesCommand(root);
   AddRegressCommand(root);
+  AddSlurmCommand(root);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

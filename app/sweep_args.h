@@ -1,10 +1,12 @@
-// Options shared by `vigil sweep` and `vigil paper`: the output directory, threads, resume/force, quiet.
+// Options shared by `vigil sweep` and `vigil paper`: the output directory, threads, resume/force, quiet, the
+// shard and the plan listing.
 #pragma once
 
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "experiments/sweep_shard.h"
 #include "experiments/sweep_spec.h"
 
 namespace vigil::app {
@@ -12,11 +14,15 @@ namespace vigil::app {
 struct SweepArgs {
   std::string output;
   int threads = 0;
-  bool resume = false, force = false, quiet = false;
+  bool resume = false, force = false, quiet = false, list = false;
+  std::string shard;  // "I/N"; empty: the whole sweep
 
   void AddTo(CLI::App* cmd);
-  // Runs `spec` into `output` with the real run (ExecuteRun), writes the tables, reports on stderr.
-  // Returns the exit status (0; failed runs are results, counted in summary.md).
+  // The parsed --shard (the whole sweep without it); InputError when malformed.
+  experiments::SweepShard Shard() const;
+  // With --list prints the plan's run ids (of the shard) on stdout; otherwise runs `spec` into `output` with
+  // the real run (ExecuteRun), writes the tables (not for a shard), reports on stderr. Returns the exit
+  // status (0; failed runs are results, counted in summary.md).
   int Run(const experiments::SweepSpec& spec, const char* command) const;
 };
 

@@ -1,10 +1,9 @@
 #include "experiments/results_csv.h"
 
-#include <unistd.h>
-
 #include <cmath>
 
 #include "core/format.h"
+#include "core/staging.h"
 #include "experiments/metrics_access.h"
 
 namespace vigil::experiments {
@@ -22,34 +21,62 @@ std::string Text(std::string s) {
 
 }  // namespace
 
+void ResultsCsvWriter::Stream::Open(const fs::path& path, const std::string& header) {
+  final = path;
+  temp = StagingPathFor(path);
+  out.open(temp, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error(temp.string() + ": cannot open for writing");
+  out << header << '\n';
+}
+
+void ResultsCsvWriter::Stream::Commit() {
+  out.close();
+  if (!out) throw std::runtime_error(temp.string() + ": write failed");
+  fs::rename(temp, final);
+}
+
+void ResultsCsvWriter::Stream::Abandon() {
+  out.close();
+  std::error_code ec;
+  fs::remove(temp, ec);
+}
+
 ResultsCsvWriter::ResultsCsvWriter(const fs::path& sweep_dir, const SweepSpec& spec,
                                    std::vector<double> distances_m)
-    : spec_(spec), distances_m_(std::move(distances_m)), final_(sweep_dir / "results.csv") {
-  temp_ = final_;
-  temp_ += ".tmp-" + std::to_string(static_cast<long>(::getpid()));
-  out_.open(temp_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw std::runtime_error(temp_.string() + ": cannot open for writing");
-  out_ << Header() << '\n';
+    : spec_(spec), distances_m_(std::move(distances_m)) {
+  results_.Open(sweep_dir / "results.csv", Header());
+  timing_.Open(sweep_dir / "timing.csv", TimingHeader());
 }
 
 ResultsCsvWriter::~ResultsCsvWriter() {
   if (!committed_) {
-    out_.close();
-    std::error_code ec;
-    fs::remove(temp_, ec);
+    results_.Abandon();
+    timing_.Abandon();
   }
 }
 
 void ResultsCsvWriter::Add(const SweepRunRef& run, const SweepCell& cell, const nlohmann::json& metrics) {
-  out_ << Row(run, cell, metrics) << '\n';
-  out_.flush();  // streamed: the partial file shows the runs so far
+  results_.out << Row(run, cell, metrics) << '\n';
+  results_.out.flush();  // streamed: the partial file shows the runs so far
+  timing_.out << TimingRow(run, metrics) << '\n';
+  timing_.out.flush();
 }
 
 void ResultsCsvWriter::Commit() {
-  out_.close();
-  if (!out_) throw std::runtime_error(temp_.string() + ": write failed");
-  fs::rename(temp_, final_);
+  timing_.Commit();
+  results_.Commit();
   committed_ = true;
+}
+
+std::string ResultsCsvWriter::TimingHeader() {
+  return "#id,simulate_s,templates_s,detect_s,estimate_s,evaluate_s,total_s";
+}
+
+std::string ResultsCsvWriter::TimingRow(const SweepRunRef& run, const nlohmann::json& m) {
+  std::string r = run.id;
+  for (const char* stage : {"simulate", "templates", "detect", "estimate", "evaluate", "total"})
+    r += "," + Number(MetricNumber(m, {"wall_time_s", stage}));
+  return r;
 }
 
 std::string ResultsCsvWriter::Header() const {
@@ -63,7 +90,7 @@ std::string ResultsCsvWriter::Header() const {
     h += ",re_trans_mean_m_" + s + ",re_yaw_mean_deg_" + s + ",re_n_" + s;
   }
   h += ",detector,flagged_samples,glitched_samples,precision,recall,f1,imu_rmse_raw,imu_rmse_cleaned";
-  h += ",estimator_resets,wall_time_s";
+  h += ",estimator_resets";
   return h;
 }
 
@@ -92,7 +119,6 @@ std::string ResultsCsvWriter::Row(const SweepRunRef& run, const SweepCell& cell,
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "raw"}));
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "cleaned"}));
   r += "," + Number(MetricNumber(m, {"estimator", "resets"}));
-  r += "," + Number(MetricNumber(m, {"wall_time_s", "total"}));
   return r;
 }
 

@@ -119,12 +119,14 @@ SweepAggregate AggregateSweep(const fs::path& dir, const SweepSpec& spec,
       ++cell.runs;
       ++cell.missing;
       ++agg.missing;
+      agg.missing_ids.push_back(run.id);
       if (visit) visit(run, cells[run.cell], nullptr);
       continue;
     }
     const nlohmann::json metrics = nlohmann::json::parse(ReadFile(path), nullptr, false);
     if (metrics.is_discarded()) throw InputError(path.string() + ": not valid JSON");
     AddRunMetrics(metrics, distances_m, &cell);
+    if (IsFailed(metrics)) agg.failed_ids.push_back(run.id);
     if (visit) visit(run, cells[run.cell], &metrics);
   }
   return agg;

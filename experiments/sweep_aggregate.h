@@ -44,6 +44,7 @@ struct SweepAggregate {
   std::vector<double> distances_m;
   std::vector<CellResult> cells;  // groups.size() x methods.size(), group-major
   std::size_t runs = 0, missing = 0;
+  std::vector<std::string> missing_ids, failed_ids;  // plan order
 
   const CellResult& Cell(std::size_t group, std::size_t method) const {
     return cells[group * methods.size() + method];

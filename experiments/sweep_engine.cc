@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/output.h"
+#include "core/staging.h"
 #include "experiments/progress.h"
 
 namespace vigil::experiments {
@@ -34,15 +35,6 @@ nlohmann::json FailureMetrics(const std::string& reason) {
   return j;
 }
 
-// Leftovers of a killed sweep: staging directories and temporary files ("<name>.tmp-<pid>").
-void RemoveStaleStaging(const fs::path& runs_dir) {
-  std::error_code ec;
-  std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(runs_dir, ec))
-    if (entry.path().filename().string().find(".tmp-") != std::string::npos) stale.push_back(entry.path());
-  for (const auto& p : stale) fs::remove_all(p, ec);
-}
-
 }  // namespace
 
 bool IsFailed(const nlohmann::json& metrics) {
@@ -61,7 +53,7 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
   const auto start = std::chrono::steady_clock::now();
   const fs::path runs_dir = sweep_dir / "runs";
   fs::create_directories(runs_dir);
-  RemoveStaleStaging(runs_dir);
+  RemoveStaleStaging(runs_dir);  // of dead processes on this host only: other shards may be writing here
 
   const int threads =
       options.threads > 0 ? options.threads : static_cast<int>(tbb::info::default_concurrency());
@@ -127,22 +119,35 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
   return outcome;
 }
 
-void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
+void CheckSweepDirectory(const fs::path& dir, bool resume, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError(dir.string() + ": exists and is not a directory");
   const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
-  if (non_empty && !resume && !force)
+  if (!non_empty) return;
+  const bool is_sweep = fs::is_regular_file(dir / "sweep.yaml", ec);
+  if (resume && !is_sweep)
+    throw InputError(dir.string() +
+                     ": not a sweep directory (no sweep.yaml), nothing to resume: refusing to write into it "
+                     "(choose an empty or new directory)");
+  if (!resume && !force)
     throw InputError(dir.string() +
                      ": output directory is not empty (use --resume to continue the sweep "
                      "in it, or --force to start over)");
+  if (force && !resume && fs::exists(dir / "runs", ec) && !is_sweep)
+    throw InputError(dir.string() + ": has runs/ but no sweep.yaml: not a sweep directory, not replaced");
+}
+
+void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
+  CheckSweepDirectory(dir, resume, force);
+  std::error_code ec;
+  const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
   if (non_empty && force && !resume) {
     // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
-    if (fs::exists(dir / "runs", ec) && !fs::exists(dir / "sweep.yaml", ec))
-      throw InputError(dir.string() + ": has runs/ but no sweep.yaml: not a sweep directory, not replaced");
     fs::remove_all(dir / "runs", ec);
     fs::remove_all(dir / "figures", ec);
-    for (const char* name : {"sweep.yaml", "results.csv", "summary.md"}) fs::remove(dir / name, ec);
+    for (const char* name : {"sweep.yaml", "results.csv", "timing.csv", "summary.md"})
+      fs::remove(dir / name, ec);
     for (const char* table : {"table2", "table3", "table4"})
       for (const char* ext : {".md", ".csv", ".tex"}) fs::remove(dir / (std::string(table) + ext), ec);
   }

@@ -3,9 +3,12 @@
 // injected (the sweep's real one calls ExecuteRun; tests use cheap fakes).
 //
 // Layout inside the sweep directory: runs/<id>/ with at least metrics.json. A run is written into a staging
-// sibling runs/<id>.tmp-<pid>/ and renamed into place when complete, so runs/<id>/metrics.json exists exactly
-// for finished runs, whatever happens to the process (kill -9 included). With `resume`, finished runs are
-// read back instead of executed; without it, the caller has emptied runs/ (see PrepareSweepDirectory).
+// sibling runs/<id>.tmp-<host>-<pid>/ and renamed into place when complete, so runs/<id>/metrics.json exists
+// exactly for finished runs, whatever happens to the process (kill -9 included). Several processes (shards,
+// possibly on several machines) may run disjoint runs in one directory at once: at start only the staging of
+// dead processes on this host is removed (core/staging.h), never that of a live or a remote one. With
+// `resume`, finished runs are read back instead of executed; without it, the caller has emptied runs/ (see
+// PrepareSweepDirectory).
 //
 // Failures: a run function that throws gives a committed metrics.json {"status": "failed", "failure_reason":
 // what()}; a run whose metrics say "failed" (e.g. the estimator diverged) counts as failed too; the sweep
@@ -53,6 +56,11 @@ std::filesystem::path RunMetricsPath(const std::filesystem::path& sweep_dir, con
 SweepOutcome ExecuteSweep(const std::filesystem::path& sweep_dir, const std::vector<std::string>& run_ids,
                           const RunFunction& run, const ResultFunction& on_result,
                           const SweepEngineOptions& options);
+
+// The checks of PrepareSweepDirectory, without writing anything: an existing non-empty `dir` is refused
+// (InputError) unless `resume` and it holds a sweep (sweep.yaml), or `force` and it is not a foreign
+// directory with a runs/ folder.
+void CheckSweepDirectory(const std::filesystem::path& dir, bool resume, bool force);
 
 // Prepares `dir` for a sweep: creates it; an existing non-empty one is refused (InputError) unless `resume`
 // (kept as is: finished runs stay) or `force` (the previous sweep's runs/ and result files are removed).

@@ -1,10 +1,13 @@
 #include "experiments/sweep_runner.h"
 
+#include <memory>
+
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "core/error.h"
 #include "core/output.h"
+#include "core/staging.h"
 #include "experiments/detection_stage.h"
 #include "experiments/results_csv.h"
 #include "experiments/tables.h"
@@ -47,42 +50,84 @@ SweepTemplates BuildSweepTemplates(const SweepSpec& spec, const std::vector<RunC
   return out;
 }
 
-SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRunOptions& options,
-                      const RunExecutor& executor) {
-  const std::string resolved = ResolvedSweepYaml(spec);
+SweepPlan ResolveSweepPlan(const SweepSpec& spec) {
+  SweepPlan plan;
+  plan.cells = EnumerateCells(spec);
+  plan.configs.reserve(plan.cells.size());
+  for (const SweepCell& cell : plan.cells) plan.configs.push_back(ResolveCellConfig(spec, cell));
+  plan.runs = EnumerateRuns(spec, plan.cells);
+  return plan;
+}
+
+void CheckSweepOutput(const fs::path& dir, const std::string& resolved, const SweepRunOptions& options,
+                      const std::vector<SweepRunRef>& runs) {
+  const fs::path sweep_file = dir / "sweep.yaml";
+  const bool sharded = !options.shard.whole();
+  if (sharded && options.force)
+    throw InputError("--force: cannot be used with --shard " + options.shard.Label() +
+                     " (it would remove the other shards' runs); use --resume, or a new directory");
+  // Shards share the directory: one that holds the same sweep is expected, whoever started it.
+  std::error_code ec;
+  const bool has_sweep = fs::is_regular_file(sweep_file, ec);
+  const bool same_sweep = has_sweep && ReadFile(sweep_file) == resolved;
+  if ((options.resume || sharded) && has_sweep && !same_sweep)
+    throw InputError(sweep_file.string() +
+                     ": a different sweep was started in this directory (the sweep file or its options "
+                     "changed since); use a new directory" +
+                     (sharded ? "" : ", or --force to start over"));
+  CheckSweepDirectory(dir, options.resume || (sharded && same_sweep), options.force);
+  if (sharded && !options.resume) {
+    std::size_t finished = 0;
+    for (const SweepRunRef& run : runs) finished += fs::is_regular_file(RunMetricsPath(dir, run.id), ec);
+    if (finished > 0)
+      throw InputError(dir.string() + ": shard " + options.shard.Label() + " already has " +
+                       std::to_string(finished) + " finished runs here (use --resume to continue it)");
+  }
+}
+
+void CommitSweepFile(const fs::path& dir, const std::string& resolved) {
   const fs::path sweep_file = dir / "sweep.yaml";
   std::error_code ec;
-  if (options.resume && fs::is_regular_file(sweep_file, ec) && ReadFile(sweep_file) != resolved)
+  if (fs::is_regular_file(sweep_file, ec) && ReadFile(sweep_file) == resolved) return;
+  if (!WriteFileIfAbsent(sweep_file, resolved) && ReadFile(sweep_file) != resolved)
     throw InputError(sweep_file.string() +
-                     ": a different sweep was started in this directory (use --force to start over)");
-  PrepareSweepDirectory(dir, options.resume, options.force);
-  WriteFileAtomic(sweep_file, resolved);
+                     ": a different sweep was started in this directory at the same time");
+}
 
-  const std::vector<SweepCell> cells = EnumerateCells(spec);
-  std::vector<RunConfig> configs;
-  configs.reserve(cells.size());
-  for (const SweepCell& cell : cells) configs.push_back(ResolveCellConfig(spec, cell));
-  const std::vector<SweepRunRef> runs = EnumerateRuns(spec, cells);
-
-  std::vector<bool> needed(cells.size(), false);
+SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRunOptions& options,
+                      const RunExecutor& executor) {
+  // 1. Everything that can be refused, before the first byte is written.
+  const std::string resolved = ResolvedSweepYaml(spec);
+  const SweepPlan plan = ResolveSweepPlan(spec);
+  const std::vector<SweepRunRef> runs = ShardRuns(plan.runs, options.shard);
+  CheckSweepOutput(dir, resolved, options, runs);
+  std::error_code ec;
+  const bool keep_finished = options.resume || !options.shard.whole();
+  std::vector<bool> needed(plan.cells.size(), false);
   for (const SweepRunRef& run : runs)
-    if (!options.resume || !fs::is_regular_file(RunMetricsPath(dir, run.id), ec)) needed[run.cell] = true;
-  const SweepTemplates templates = BuildSweepTemplates(spec, configs, needed, options.threads);
+    if (!keep_finished || !fs::is_regular_file(RunMetricsPath(dir, run.id), ec)) needed[run.cell] = true;
+  const SweepTemplates templates = BuildSweepTemplates(spec, plan.configs, needed, options.threads);
+
+  // 2. The directory, sweep.yaml and the runs.
+  PrepareSweepDirectory(dir, keep_finished, options.force);
+  CommitSweepFile(dir, resolved);
+  RemoveStaleStaging(dir);  // results.csv.tmp-... of a killed sweep on this host
 
   std::vector<std::string> ids;
   ids.reserve(runs.size());
   for (const auto& run : runs) ids.push_back(run.id);
-
-  ResultsCsvWriter csv(dir, spec, configs.front().evaluation.distances_m);
+  const std::vector<double>& distances = plan.configs.front().evaluation.distances_m;
+  std::unique_ptr<ResultsCsvWriter> csv;
+  if (options.shard.whole()) csv = std::make_unique<ResultsCsvWriter>(dir, spec, distances);
   SweepEngineOptions engine;
   engine.threads = options.threads;
-  engine.resume = options.resume;
+  engine.resume = keep_finished;
   engine.progress = options.progress;
   const SweepOutcome outcome = ExecuteSweep(
       dir, ids,
       [&](std::size_t index, const fs::path& run_dir) {
         const SweepRunRef& run = runs[index];
-        RunConfig config = configs[run.cell];
+        RunConfig config = plan.configs[run.cell];
         config.seed = run.seed;
         RunOptions run_options;
         run_options.write_trajectories = spec.write_trajectories;
@@ -91,13 +136,14 @@ SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRun
         return executor(config, run_options, run_dir);
       },
       [&](std::size_t index, const nlohmann::json& metrics) {
-        csv.Add(runs[index], cells[runs[index].cell], metrics);
+        if (csv) csv->Add(runs[index], plan.cells[runs[index].cell], metrics);
       },
       engine);
-  csv.Commit();  // streamed in plan order above; the tables come from the same committed runs
+  if (!csv) return outcome;  // a shard: `vigil tables DIR` merges every shard's runs
+  csv->Commit();             // streamed in plan order above; the tables come from the same committed runs
   if (options.write_tables) {
-    const SweepSpec written = LoadSweepSpec(sweep_file.string());  // summary.md names DIR/sweep.yaml
-    WriteTableFiles(dir, written, AggregateSweep(dir, written, configs.front().evaluation.distances_m));
+    const SweepSpec written = LoadSweepSpec((dir / "sweep.yaml").string());
+    WriteTableFiles(dir, written, AggregateSweep(dir, written, distances));
   }
   return outcome;
 }

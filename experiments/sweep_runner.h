@@ -1,5 +1,16 @@
 // A whole sweep: resolve the grid, build the DTW templates, run everything through the engine, stream
-// results.csv, and write the tables.
+// results.csv and timing.csv, and write the tables.
+//
+// Nothing is written before the whole plan is valid: every cell's configuration, every run id, the
+// directory rules (core/output.h, PrepareSweepDirectory) and the DTW template builds are checked first, so a
+// sweep refused for bad input leaves no file behind.
+//
+// Shards (experiments/sweep_shard.h): with a shard other than the whole sweep, only that shard's runs are
+// executed, and nothing but run directories is written besides DIR/sweep.yaml (created by the first shard,
+// atomically; every other one checks that its sweep is the same): no results.csv, timing.csv or tables,
+// which `vigil tables DIR` writes once every shard is done. Shards may run at the same time, on several
+// machines sharing the directory. A shard whose runs are already there needs `resume` (finished runs kept);
+// `force` would remove the other shards' runs and is refused.
 //
 // DTW templates: for every cell whose method is `dtw` without a templates_file, a library is built from a
 // glitch-free simulation of that cell's scenario with seed spec.template_seed (never a run seed) and shared
@@ -19,6 +30,7 @@
 #include "detectors/template_library.h"
 #include "experiments/run.h"
 #include "experiments/sweep_engine.h"
+#include "experiments/sweep_shard.h"
 #include "experiments/sweep_spec.h"
 
 namespace vigil::experiments {
@@ -33,6 +45,7 @@ struct SweepRunOptions {
   bool force = false;   // start over in a non-empty `dir`
   std::FILE* progress = nullptr;
   bool write_tables = true;
+  SweepShard shard;  // the whole sweep by default
 };
 
 // The template library of every cell that needs one (null for the others), in cell order.
@@ -43,7 +56,23 @@ struct SweepTemplates {
 SweepTemplates BuildSweepTemplates(const SweepSpec& spec, const std::vector<RunConfig>& cell_configs,
                                    const std::vector<bool>& needed, int threads);
 
-// Runs `spec` into `dir`. InputError for bad input (a different sweep.yaml on --resume, a non-empty dir).
+// The resolved plan of a sweep: cells, their configurations (validated) and runs, in plan order.
+struct SweepPlan {
+  std::vector<SweepCell> cells;
+  std::vector<RunConfig> configs;  // one per cell
+  std::vector<SweepRunRef> runs;
+};
+SweepPlan ResolveSweepPlan(const SweepSpec& spec);
+
+// The checks RunSweep makes of `dir` before writing anything (`shard_runs`: the runs it would execute);
+// InputError when refused. Then CommitSweepFile writes DIR/sweep.yaml (`resolved`, ResolvedSweepYaml) unless
+// a concurrent shard did, and refuses a different one.
+void CheckSweepOutput(const std::filesystem::path& dir, const std::string& resolved,
+                      const SweepRunOptions& options, const std::vector<SweepRunRef>& shard_runs);
+void CommitSweepFile(const std::filesystem::path& dir, const std::string& resolved);
+
+// Runs `spec` (or its options.shard) into `dir`. InputError for bad input (a different sweep.yaml in `dir`,
+// a non-empty directory that is not this sweep's, a configuration or template build that cannot work).
 SweepOutcome RunSweep(const SweepSpec& spec, const std::filesystem::path& dir, const SweepRunOptions& options,
                       const RunExecutor& executor);
 

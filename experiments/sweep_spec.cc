@@ -25,6 +25,18 @@ bool IsLabel(const std::string& s) {
   });
 }
 
+// Run ids name directories (plus a staging suffix of up to ~80 characters, core/staging.h): NAME_MAX is 255.
+constexpr std::size_t kMaxLabelLength = 64;
+constexpr std::size_t kMaxRunIdLength = 160;
+
+void CheckLabelLength(const std::string& path, const YAML::Node& n, const std::string& key,
+                      const std::string& label) {
+  if (label.size() > kMaxLabelLength)
+    Fail(path, n, key,
+         "label of " + std::to_string(label.size()) + " characters (at most " +
+             std::to_string(kMaxLabelLength) + ": labels become parts of run ids and directory names)");
+}
+
 std::string Sanitize(const std::string& s) {
   std::string out = s;
   for (char& c : out)
@@ -98,6 +110,7 @@ SweepAxis ParseAxis(const std::string& path, const YAML::Node& key_node, const Y
     for (std::size_t i = 0; i < n.size(); ++i) {
       SweepSetting s;
       s.label = LastComponent(axis.key) + "_" + ValueLabel(n[i]);
+      CheckLabelLength(path, n[i], where, s.label);
       s.overrides.push_back({axis.key, n[i], LineOf(n[i])});
       axis.settings.push_back(std::move(s));
     }
@@ -109,6 +122,7 @@ SweepAxis ParseAxis(const std::string& path, const YAML::Node& key_node, const Y
       if (!IsLabel(s.label))
         Fail(path, it->first, where + "." + s.label,
              "setting names may use only letters, digits, '_' and '.'");
+      CheckLabelLength(path, it->first, where + "." + s.label, s.label);
       CollectOverrides(path, it->second, axis.key, where + "." + s.label, &s.overrides);
       axis.settings.push_back(std::move(s));
     }
@@ -132,6 +146,7 @@ std::vector<SweepSetting> ParseMethods(const std::string& path, const YAML::Node
     const std::string where = "methods." + m.label;
     if (!IsLabel(m.label))
       Fail(path, it->first, where, "method names may use only letters, digits, '_' and '.'");
+    CheckLabelLength(path, it->first, where, m.label);
     if (it->second.IsScalar()) {
       m.overrides.push_back({"detector.type", it->second, LineOf(it->second)});
     } else {
@@ -219,6 +234,22 @@ SweepSpec LoadSweepSpec(const std::string& path) {
   std::set<std::string> axis_keys;
   for (const auto& a : spec.axes)
     if (!axis_keys.insert(a.key).second) Fail(path, axes_node, "axes." + a.key, "duplicate axis");
+
+  // The longest run id: the longest label of every axis and method, and the longest seed.
+  std::size_t longest_id = 0;
+  for (const auto& a : spec.axes) {
+    std::size_t longest = 0;
+    for (const auto& st : a.settings) longest = std::max(longest, st.label.size());
+    longest_id += longest + 1;
+  }
+  std::size_t longest_method = 0;
+  for (const auto& m : spec.methods) longest_method = std::max(longest_method, m.label.size());
+  const uint64_t largest_seed = *std::max_element(spec.seeds.begin(), spec.seeds.end());
+  longest_id += longest_method + 1 + std::max<std::size_t>(4, 1 + std::to_string(largest_seed).size());
+  if (longest_id > kMaxRunIdLength)
+    Fail(path, root, "(run ids)",
+         "the longest run id would have " + std::to_string(longest_id) + " characters (at most " +
+             std::to_string(kMaxRunIdLength) + "): shorten the setting or method names");
 
   // Type-check every override once against the schema (cells re-apply them, in order).
   RunConfig check = LoadRunConfig(spec.base.string());

@@ -6,6 +6,7 @@
 
 #include "core/format.h"
 #include "core/output.h"
+#include "core/staging.h"
 #include "experiments/paper_reference.h"
 #include "experiments/results_csv.h"
 #include "experiments/statistics.h"
@@ -73,7 +74,9 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   std::size_t failed = 0;
   for (const auto& c : agg.cells) failed += c.failed;
   std::string s = "# Sweep summary\n\n";
-  s += "Sweep: `" + spec.path + "`; base configuration `" + spec.base.string() + "`.\n\n";
+  // File names only: the same summary wherever the sweep directory and the configs are.
+  s += "Sweep: `" + fs::path(spec.path).filename().string() + "`; base configuration `" +
+       spec.base.filename().string() + "`.\n\n";
   s += std::to_string(agg.runs) + " runs (" + std::to_string(agg.groups.size()) + " groups x " +
        std::to_string(agg.methods.size()) + " methods x " + std::to_string(spec.seeds.size()) +
        " seeds): " + std::to_string(agg.runs - failed - agg.missing) + " ok, " + std::to_string(failed) +
@@ -138,6 +141,7 @@ std::vector<double> SweepDistances(const SweepSpec& spec) {
 SweepAggregate WriteSweepTables(const fs::path& dir) {
   const SweepSpec spec = LoadSweepSpec((dir / "sweep.yaml").string());
   const std::vector<double> distances = SweepDistances(spec);
+  RemoveStaleStaging(dir);  // a killed sweep's results.csv.tmp-... (this host's dead processes only)
   ResultsCsvWriter csv(dir, spec, distances);
   const SweepAggregate agg = AggregateSweep(
       dir, spec, distances, [&](const SweepRunRef& run, const SweepCell& cell, const nlohmann::json* m) {

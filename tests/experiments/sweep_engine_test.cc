@@ -1,11 +1,14 @@
 #include "experiments/sweep_engine.h"
 
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdlib>
 #include <mutex>
 #include <set>
@@ -13,17 +16,22 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
+#include "core/staging.h"
 #include "experiments/progress.h"
 #include "experiments/sweep_runner.h"
+#include "experiments/tables.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
 #include "tests/experiments/sweep_test_util.h"
+
+extern char** environ;
 
 namespace vigil::experiments {
 namespace {
 namespace fs = std::filesystem;
 using testing::FakeMetrics;
 using testing::SleepMs;
+using testing::SlowFakeExecutor;
 using testing::WriteSmallSweep;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
@@ -69,9 +77,36 @@ TEST(SweepEngine, ResultsArriveInPlanOrderAndAreTheSameForAnyThreadCount) {
   EXPECT_EQ(texts[0], texts[1]);
 }
 
+// A barrier for two: the first run to arrive waits until a second one arrives, which can only happen when
+// two runs execute at the same time. A wait that times out counts as a failure (no run is left stuck).
+class PairBarrier {
+ public:
+  // False when no partner came within the timeout.
+  bool ArriveAndWait(std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const std::size_t generation = generation_;
+    if (++waiting_ == 2) {
+      waiting_ = 0;
+      ++generation_;
+      released_.notify_all();
+      return true;
+    }
+    if (released_.wait_for(lock, timeout, [&] { return generation_ != generation; })) return true;
+    waiting_ = 0;  // give up this generation: the next arrival starts a new pair
+    ++generation_;
+    return false;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable released_;
+  std::size_t waiting_ = 0, generation_ = 0;
+};
+
 TEST(SweepEngine, RunsExecuteInParallel) {
   TempDir dir;
-  std::atomic<int> running{0}, most{0};
+  PairBarrier barrier;
+  std::atomic<int> running{0}, most{0}, timeouts{0};
   SweepEngineOptions options;
   options.threads = 2;
   ExecuteSweep(
@@ -81,12 +116,13 @@ TEST(SweepEngine, RunsExecuteInParallel) {
         int seen = most.load();
         while (now > seen && !most.compare_exchange_weak(seen, now)) {
         }
-        SleepMs(30);
+        if (!barrier.ArriveAndWait(std::chrono::seconds(20))) ++timeouts;
         --running;
         return nlohmann::json{{"status", "ok"}};
       },
       {}, options);
-  EXPECT_EQ(most.load(), 2);
+  EXPECT_EQ(timeouts.load(), 0) << "a run waited in vain for a second one running at the same time";
+  EXPECT_EQ(most.load(), 2);  // never more runs at once than threads
 }
 
 TEST(SweepEngine, FailuresAreRecordedAndTheSweepGoesOn) {
@@ -113,7 +149,14 @@ TEST(SweepEngine, ResumeSkipsFinishedRunsAndCleansStaging) {
   TempDir dir;
   const auto all = Ids(10);
   ExecuteSweep(dir.path(), {all.begin(), all.begin() + 4}, IndexRun, {}, {});
-  fs::create_directories(dir.path() / "runs" / "run5.tmp-99999");  // left by a killed sweep
+  const pid_t dead = fork();  // a process that has exited: its staging is stale
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const std::string host = vigil::StagingHost();
+  const fs::path stale = dir.path() / "runs" / ("run5.tmp-" + host + "-" + std::to_string(dead));
+  const fs::path live = dir.path() / "runs" / ("run6.tmp-" + host + "-1");  // init: alive
+  const fs::path remote = dir.path() / "runs" / ("run7.tmp-othernode-" + std::to_string(dead));
+  for (const auto& p : {stale, live, remote}) fs::create_directories(p);
   std::atomic<int> calls{0};
   SweepEngineOptions options;
   options.resume = true;
@@ -128,7 +171,9 @@ TEST(SweepEngine, ResumeSkipsFinishedRunsAndCleansStaging) {
   EXPECT_EQ(calls.load(), 6);
   EXPECT_EQ(o.resumed, 4u);
   EXPECT_EQ(o.executed, 6u);
-  EXPECT_FALSE(fs::exists(dir.path() / "runs" / "run5.tmp-99999"));
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));    // a live process is writing it (maybe another shard)
+  EXPECT_TRUE(fs::exists(remote));  // another host's: its liveness cannot be known from here
 
   TempDir fresh_dir;
   std::string fresh_text;
@@ -196,26 +241,24 @@ TEST(Progress, BarWritesToItsStreamOnlyWhenEnabled) {
 // ---------------------------------------------------------------------------------------------------------
 // The whole sweep with a fake executor: kill -9 in the middle, resume, and compare with an uninterrupted one.
 
-constexpr const char* kHelperEnv = "VIGIL_SWEEP_KILL_HELPER_DIR";
-
-RunExecutor SlowFakeExecutor(int sleep_ms) {
-  return [sleep_ms](const RunConfig& c, const RunOptions&, const fs::path& d) {
-    SleepMs(sleep_ms);
-    vigil::WriteFileAtomic(d / "config.yaml", config::ToYaml(const_cast<RunConfig&>(c)));
-    return FakeMetrics(c);
-  };
-}
-
 constexpr const char* kMethods = "  trunc: threshold\n  original: none\n  hampel: hampel\n";
 
-// Not a test of its own: the process that ResumeAfterKillGivesTheSameResults starts and kills.
-TEST(SweepKillHelper, RunSlowSweep) {
-  const char* dir = std::getenv(kHelperEnv);
-  if (!dir) GTEST_SKIP() << "helper process of SweepRunner.ResumeAfterKillGivesTheSameResults";
-  SweepRunOptions options;
-  options.threads = 2;
-  RunSweep(LoadSweepSpec((fs::path(dir) / "sweep.yaml").string()), fs::path(dir) / "out", options,
-           SlowFakeExecutor(40));
+// Starts the sweep helper executable (tests/experiments/sweep_helper.cc) with `args`.
+pid_t StartHelper(const std::vector<std::string>& args) {
+  std::vector<std::string> words = {VIGIL_SWEEP_HELPER};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t child = -1;
+  if (::posix_spawn(&child, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  return child;
+}
+
+int ExitStatusOf(pid_t child) {
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 std::size_t CommittedRuns(const fs::path& runs) {
@@ -229,17 +272,9 @@ std::size_t CommittedRuns(const fs::path& runs) {
 TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
   TempDir dir;
   const std::string sweep = WriteSmallSweep(dir, kMethods, "{count: 5, first: 1}");  // 30 runs
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    ::setenv(kHelperEnv, dir.path().c_str(), 1);
-    const std::string filter = "--gtest_filter=SweepKillHelper.RunSlowSweep";
-    char exe[] = "/proc/self/exe";
-    char* argv[] = {exe, const_cast<char*>(filter.c_str()), nullptr};
-    ::execv(exe, argv);
-    ::_exit(127);
-  }
   const fs::path out = dir.path() / "out";
+  const pid_t child = StartHelper({sweep, out.string(), "40"});
+  ASSERT_GT(child, 0);
   for (int i = 0; i < 1000 && CommittedRuns(out / "runs") < 8; ++i) SleepMs(5);
   ::kill(child, SIGKILL);
   int status = 0;
@@ -257,6 +292,9 @@ TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
   const SweepOutcome o = RunSweep(spec, out, resume, SlowFakeExecutor(0));
   EXPECT_EQ(o.resumed + o.executed, 30u);
   EXPECT_EQ(o.resumed, committed);
+  // The killed helper's staging (its run directories, results.csv.tmp-<host>-<pid>) is gone.
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 
   SweepRunOptions straight;
   straight.threads = 1;
@@ -321,6 +359,114 @@ TEST(SweepRunner, DtwTemplatesAreBuiltOnceFromADisjointSeedAndShared) {
   const auto expected = detectors::BuildTemplates(sim::Simulate(clean, 1000).imu, configs[0].detector.dtw);
   EXPECT_EQ(t.per_cell[0]->values, expected.values);
   EXPECT_EQ(t.per_cell[0]->threshold, expected.threshold);
+}
+
+// What a sweep directory holds at its top level and in runs/ (names only).
+std::set<std::string> Listing(const fs::path& dir) {
+  std::set<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+    names.insert(fs::relative(e.path(), dir).string());
+  return names;
+}
+
+TEST(SweepRunner, ConcurrentShardsGiveTheSameResultsAsOneSweep) {
+  TempDir dir;
+  const std::string sweep = WriteSmallSweep(dir, kMethods, "{count: 5, first: 1}");  // 30 runs
+  const fs::path out = dir.path() / "sharded";
+  const std::string ready = (dir.path() / "ready-").string();
+  const pid_t a = StartHelper({sweep, out.string(), "5", "0/2", ready, "2"});
+  const pid_t b = StartHelper({sweep, out.string(), "5", "1/2", ready, "2"});
+  ASSERT_GT(a, 0);
+  ASSERT_GT(b, 0);
+  EXPECT_EQ(ExitStatusOf(a), 0);
+  EXPECT_EQ(ExitStatusOf(b), 0);
+  // Shards write runs and sweep.yaml only: no shared results.csv, no staging left.
+  for (const auto& name : Listing(out))
+    EXPECT_TRUE(name == "sweep.yaml" || name == "runs" || name.rfind("runs/", 0) == 0) << name;
+  EXPECT_EQ(CommittedRuns(out / "runs"), 30u);
+  WriteSweepTables(out);
+
+  SweepRunOptions straight;
+  straight.threads = 2;
+  const fs::path one = dir.path() / "one";
+  RunSweep(LoadSweepSpec(sweep), one, straight, SlowFakeExecutor(0));
+  for (const char* f : {"results.csv", "table2.md", "table3.csv", "table4.tex", "summary.md"})
+    EXPECT_EQ(vigil::ReadFile(out / f), vigil::ReadFile(one / f)) << f;
+}
+
+TEST(SweepRunner, ShardsAreResumedAndCheckedAgainstTheDirectorysSweep) {
+  TempDir dir;
+  const SweepSpec spec = LoadSweepSpec(WriteSmallSweep(dir, kMethods, "[1, 2]"));  // 12 runs
+  const fs::path out = dir.path() / "out";
+  SweepRunOptions shard;
+  shard.shard = ParseShard("0/3");
+  const SweepOutcome first = RunSweep(spec, out, shard, SlowFakeExecutor(0));
+  EXPECT_EQ(first.total, 4u);
+  EXPECT_EQ(first.executed, 4u);
+  EXPECT_EQ(CommittedRuns(out / "runs"), 4u);
+  // Again without --resume: its runs are there already.
+  EXPECT_NE(InputErrorOf([&] { RunSweep(spec, out, shard, SlowFakeExecutor(0)); }).find("use --resume"),
+            std::string::npos);
+  shard.resume = true;
+  EXPECT_EQ(RunSweep(spec, out, shard, SlowFakeExecutor(0)).resumed, 4u);
+  // --force would remove the other shards' runs.
+  SweepRunOptions force;
+  force.shard = ParseShard("1/3");
+  force.force = true;
+  EXPECT_NE(InputErrorOf([&] { RunSweep(spec, out, force, SlowFakeExecutor(0)); }).find("--force"),
+            std::string::npos);
+  // A sweep file changed between shards.
+  const SweepSpec changed = LoadSweepSpec(WriteSmallSweep(dir, kMethods, "[1, 3]"));
+  SweepRunOptions other;
+  other.shard = ParseShard("1/3");
+  EXPECT_NE(InputErrorOf([&] {
+              RunSweep(changed, out, other, SlowFakeExecutor(0));
+            }).find("a different sweep was started"),
+            std::string::npos);
+  EXPECT_EQ(CommittedRuns(out / "runs"), 4u);
+  // The other shards of the same sweep complete it; `vigil tables` then equals one whole sweep.
+  for (const char* s : {"1/3", "2/3"}) {
+    other.shard = ParseShard(s);
+    RunSweep(spec, out, other, SlowFakeExecutor(0));
+  }
+  EXPECT_EQ(WriteSweepTables(out).missing, 0u);
+  RunSweep(spec, dir.path() / "one", {}, SlowFakeExecutor(0));
+  EXPECT_EQ(vigil::ReadFile(out / "results.csv"), vigil::ReadFile(dir.path() / "one" / "results.csv"));
+}
+
+TEST(SweepRunner, ResumeRefusesADirectoryThatIsNotASweep) {
+  TempDir dir;
+  const SweepSpec spec = LoadSweepSpec(WriteSmallSweep(dir, kMethods, "[1]"));
+  const fs::path out = dir.path() / "mine";
+  fs::create_directories(out);
+  dir.File("mine/thesis.tex", "precious");
+  SweepRunOptions options;
+  options.resume = true;
+  EXPECT_NE(InputErrorOf([&] {
+              RunSweep(spec, out, options, SlowFakeExecutor(0));
+            }).find("not a sweep directory (no sweep.yaml)"),
+            std::string::npos);
+  EXPECT_EQ(Listing(out), (std::set<std::string>{"thesis.tex"}));
+}
+
+TEST(SweepRunner, AnInvalidPlanWritesNothing) {
+  TempDir dir;
+  WriteSmallSweep(dir, kMethods, "[1]");
+  // A configuration beyond the limits, and a template library that cannot be built (k = 500 templates from
+  // a 4 s scenario), are refused before the directory is created.
+  dir.File("huge.yaml", "base: base.yaml\nset: {duration_s: 1e9}\nmethods: {original: none}\nseeds: [1]\n");
+  dir.File("k500.yaml", "base: base.yaml\nmethods: {dtw: {type: dtw, dtw: {templates: 500}}}\nseeds: [1]\n");
+  for (const auto& [file, why] : std::vector<std::pair<std::string, std::string>>{
+           {"huge.yaml", "duration_s"}, {"k500.yaml", "clean slices"}}) {
+    const fs::path out = dir.path() / (file + ".out");
+    EXPECT_NE(InputErrorOf([&] {
+                RunSweep(LoadSweepSpec((dir.path() / file).string()), out, {}, SlowFakeExecutor(0));
+              }).find(why),
+              std::string::npos)
+        << file;
+    EXPECT_FALSE(fs::exists(out)) << file;
+  }
 }
 
 }  // namespace

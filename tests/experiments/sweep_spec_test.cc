@@ -96,6 +96,16 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
                 "settings)");
   EXPECT_EQ(error("set: {glitch.rate: 3}\nmethods: {a: none}\nseeds: [1]\n"),
             f + ":2: glitch.rate: must be in [0, 1]");
+  // Labels become run ids and directory names: a 300-character one is refused at its line.
+  const std::string long_label(300, 'x');
+  EXPECT_EQ(error("axes:\n  glitch:\n    " + long_label + ": {mean: 5}\nmethods: {a: none}\nseeds: [1]\n"),
+            f + ":4: axes.glitch." + long_label +
+                ": label of 300 characters (at most 64: labels become parts of run ids and directory names)");
+  const std::string label60(60, 'y');
+  EXPECT_NE(error("axes:\n  glitch: {" + label60 + ": {mean: 1}}\n  camera: {" + label60 +
+                  ": {pixel_noise_px: 1}}\nmethods: {" + label60 + ": none}\nseeds: [1]\n")
+                .find("the longest run id would have 187 characters (at most 160)"),
+            std::string::npos);
   EXPECT_EQ(InputErrorOf([&] {
               LoadSweepSpec(dir.File("nobase.yaml", "base: missing.yaml\nmethods: {a: none}\nseeds: [1]\n"));
             }).rfind((dir.path() / "nobase.yaml").string() + ":1: base: ", 0),

@@ -3,13 +3,16 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
+#include "core/output.h"
 #include "core/random.h"
 #include "experiments/run_config.h"
+#include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 
 namespace vigil::experiments::testing {
@@ -68,5 +71,16 @@ inline nlohmann::json FakeMetrics(const RunConfig& config) {
 }
 
 inline void SleepMs(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+
+// An executor that writes the run's config.yaml and returns FakeMetrics, after `sleep_ms` (so that a sweep
+// lasts long enough to be killed in the middle).
+inline RunExecutor SlowFakeExecutor(int sleep_ms) {
+  return [sleep_ms](const RunConfig& c, const RunOptions&, const std::filesystem::path& d) {
+    SleepMs(sleep_ms);
+    RunConfig copy = c;
+    vigil::WriteFileAtomic(d / "config.yaml", config::ToYaml(copy));
+    return FakeMetrics(c);
+  };
+}
 
 }  // namespace vigil::experiments::testing
