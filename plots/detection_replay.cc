@@ -6,7 +6,7 @@ namespace vigil::plots {
 
 detectors::DetectionResult ReplayDetection(const experiments::RunConfig& config, const ImuStream& raw) {
   const auto templates = experiments::ResolveTemplates(config, nullptr);
-  return detectors::DetectAndMitigate(config.detector, raw, templates.get());
+  return detectors::DetectAndMitigate(experiments::ResolveDetectorOptions(config), raw, templates.get());
 }
 
 }  // namespace vigil::plots

@@ -3,7 +3,8 @@
 //
 // The simulator is deterministic, so Simulate(config.sim, config.seed) reproduces the run's raw IMU exactly.
 // The DTW library is resolved as a run without a shared library resolves it (experiments/detection_stage.h:
-// detector.dtw.templates_file, else a glitch-free simulation with seed DeriveSeed(seed, "templates")). A
+// detector.dtw.templates_file, else a glitch-free simulation with seed DeriveSeed(seed, "templates"); the
+// paper threshold's calibrated bounds likewise). A
 // sweep that shared one library across runs may have used another one; the figure then shades the flags the
 // run recorded and overlays the re-run's mitigation.
 #pragma once
