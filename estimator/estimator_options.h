@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/config.h"
+#include "estimator/imu_noise_model.h"
 #include "estimator/init/vins_init_options.h"
 
 namespace vigil::estimator {
@@ -198,6 +199,7 @@ struct EstimatorOptions {
   FeatureOptions features;
   SolverOptions solver;
   FailureOptions failure;
+  ImuNoiseModelOptions imu_noise;
 
   template <class V>
   void Visit(V& v) {
@@ -213,6 +215,8 @@ struct EstimatorOptions {
     v.Section("solver", solver, "Ceres solve per frame");
     v.Section("failure", failure,
               "failure detection (groundtruth init: the run fails; vins: reset and re-init)");
+    v.Section("imu_noise", imu_noise,
+              "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
   }
 };
 
