@@ -80,7 +80,7 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
   const std::string f = (dir.path() / "bad.yaml").string();
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\nsurprise: 1\n"), f + ":4: surprise: unknown key");
   EXPECT_EQ(error("methods: {a: nonsense}\nseeds: [1]\n"),
-            f + ":2: detector.type: must be one of: none, threshold, dtw, hampel");
+            f + ":2: detector.type: must be one of: none, threshold, relative_threshold, dtw, hampel");
   EXPECT_EQ(error("axes:\n  glitch:\n    big: {mean: 5, loudness: 3}\nmethods: {a: none}\nseeds: [1]\n"),
             f + ":4: glitch.loudness: unknown key");
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1, 1]\n"), f + ":3: seeds: seeds must be distinct");
