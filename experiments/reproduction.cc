@@ -1,5 +1,6 @@
 #include "experiments/reproduction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <vector>
@@ -246,19 +247,30 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
       }
       s += "\n";
     }
-    s += "\nThe paper's collapse: original at N(50,10) reaches 18.05 m.\n\n";
-    s += "| noise model | original @ noise_50_10: mean ATE [m] | max [m] | failed runs | paper's order of "
-         "magnitude (>= 6 m) |\n|---|---|---|---|---|\n";
-    const auto collapse_row = [&](const std::string& model, const SeedResults& r) {
-      const SeedValues* v = r.Ate("noise_50_10", "original");
+    s +=
+        "\nThe paper's collapse: original at N(50,10) reaches 18.05 m, while every other cell of its table 2 "
+        "is at most 0.32 m.\n\n";
+    s += "| noise model | original @ noise_50_10: mean ATE [m] | max [m] | failed runs | collapse of the "
+         "paper's order of magnitude (>= 6 m) | largest other cell of table 2 [m] | other cells as the "
+         "paper's (<= 0.32 m) |\n|---|---|---|---|---|---|---|\n";
+    const auto mean_ate = [](const SeedResults& r, const char* group, const char* method) {
+      const SeedValues* v = r.Ate(group, method);
       std::vector<double> values;
       if (v)
         for (const auto& [seed, x] : *v)
           if (std::isfinite(x)) values.push_back(x);
-      const ErrorStatistics st = ComputeStatistics(values);
+      return ComputeStatistics(values);
+    };
+    const auto collapse_row = [&](const std::string& model, const SeedResults& r) {
+      const ErrorStatistics st = mean_ate(r, "noise_50_10", "original");
+      double other = 0.0;
+      for (const char* g : kGroups)
+        for (const char* m : kPaperMethods)
+          if (std::string(g) != "noise_50_10" || std::string(m) != "original")
+            other = std::max(other, mean_ate(r, g, m).mean);
       s += "| " + model + " | " + Num(st.mean, 2) + " | " + Num(st.max, 2) + " | " +
            std::to_string(r.Failed("noise_50_10", "original")) + " | " + (st.mean >= 6.0 ? "yes" : "no") +
-           " |\n";
+           " | " + Num(other, 2) + " | " + (other <= 0.32 ? "yes" : "no") + " |\n";
     };
     collapse_row("matched", results);
     for (const auto& [model, r] : noise_models) collapse_row(model, r);
