@@ -65,6 +65,12 @@ void AddCleanCommand(CLI::App& root) {
     // Read everything before writing anything.
     const ImuInput input = ResolveImuInput(args->dataset, dataset_files::kImu);
     const ImuStream raw = ReadImuCsv(input.imu.string());
+    if (options.type == detectors::DetectorType::kThreshold &&
+        options.threshold.calibration == detectors::ThresholdCalibration::kClean)
+      throw InputError(
+          "detector.threshold.calibration: clean calibrates on a simulation of a run's scenario; here set "
+          "detector.threshold.calibration=manual and its lower/upper (`vigil templates OTHER_DATASET` prints "
+          "calibrated ones)");
     std::unique_ptr<detectors::TemplateLibrary> library;
     if (options.type == detectors::DetectorType::kDtw) {
       if (options.dtw.templates_file.empty())

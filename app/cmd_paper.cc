@@ -1,5 +1,7 @@
 // `vigil paper`: the paper's simulation experiment end to end (configs/paper_sweep.yaml: sweep + tables 2-4 +
-// figures).
+// figures), then the estimator-noise ablation (configs/paper_noise_sweep.yaml into DIR/noise_ablation/) and
+// reproduction.md (the paper's claims judged, experiments/reproduction.h).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -7,6 +9,7 @@
 #include "app/commands.h"
 #include "app/config_dir.h"
 #include "app/sweep_args.h"
+#include "experiments/reproduction.h"
 #include "plots/render.h"
 
 namespace vigil::app {
@@ -14,10 +17,14 @@ namespace vigil::app {
 void AddPaperCommand(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "paper",
-      "the paper's simulation experiment: glitch settings x {trunc, dtw, original, hampel} x seeds, then "
-      "tables 2-4, summary.md (with the published numbers beside ours) and figures/*.png");
+      "the paper's simulation experiment: glitch settings x {trunc, dtw, original} (the paper's methods) and "
+      "vigil's variants x seeds, then tables 2-4, summary.md (with the published numbers beside ours), the "
+      "estimator-noise ablation (DIR/noise_ablation/), reproduction.md (the paper's claims judged) and "
+      "figures/*.png");
   struct Args {
-    std::string sweep;  // empty: the shipped configs/paper_sweep.yaml (app/config_dir.h)
+    std::string sweep;        // empty: the shipped configs/paper_sweep.yaml (app/config_dir.h)
+    std::string noise_sweep;  // empty: the shipped configs/paper_noise_sweep.yaml
+    bool no_noise_ablation = false;
     long long seeds = 10;
     SweepArgs run;
   };
@@ -29,13 +36,36 @@ void AddPaperCommand(CLI::App& root) {
   cmd->add_option("--sweep", args->sweep,
                   "the sweep file (default: paper_sweep.yaml of the configs installed beside the binary, "
                   "<prefix>/share/vigil/configs, or of the source tree for the build tree's binary)");
+  cmd->add_option("--noise-sweep", args->noise_sweep,
+                  "the estimator-noise ablation sweep (its own seeds, at most --seeds; default: the shipped "
+                  "paper_noise_sweep.yaml)");
+  cmd->add_flag("--no-noise-ablation", args->no_noise_ablation, "skip the estimator-noise ablation");
   SetAction(cmd, [args] {
     const std::string sweep = args->sweep.empty() ? ShippedConfig("paper_sweep.yaml") : args->sweep;
     experiments::SweepSpec spec = experiments::LoadSweepSpec(sweep);
     experiments::SetSeedCount(&spec, static_cast<uint64_t>(args->seeds));
-    const int status = args->run.Run(spec, "paper");
+    // The ablation is a sweep of its own in DIR/noise_ablation/; a listing or a shard covers the main sweep
+    // only (finalize a sharded paper with `vigil tables DIR --figures`, then run the ablation where wanted).
+    const bool whole = !args->run.list && args->run.Shard().whole();
+    const bool ablate = whole && !args->no_noise_ablation;
+    experiments::SweepSpec noise;
+    if (ablate) {  // read (and checked) before anything runs
+      noise = experiments::LoadSweepSpec(args->noise_sweep.empty() ? ShippedConfig("paper_noise_sweep.yaml")
+                                                                   : args->noise_sweep);
+      experiments::SetSeedCount(&noise,
+                                std::min<uint64_t>(noise.seeds.size(), static_cast<uint64_t>(args->seeds)));
+    }
+    int status = args->run.Run(spec, "paper");
     // A shard's figures would show part of the sweep: `vigil tables DIR --figures` draws them at the end.
-    if (args->run.list || !args->run.Shard().whole()) return status;
+    if (!whole) return status;
+    if (ablate) {
+      SweepArgs ablation = args->run;
+      ablation.output = (std::filesystem::path(args->run.output) / "noise_ablation").string();
+      status = std::max(status, ablation.Run(noise, "paper (noise ablation)"));
+      // reproduction.md again, now with the ablation beside the main sweep.
+      const std::filesystem::path dir = args->run.output;
+      experiments::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
+    }
     const auto figures = plots::RenderSweepFigures(args->run.output, plots::FigureOptions{});
     std::fprintf(stderr, "vigil paper: %zu figures -> %s\n", figures.size(),
                  (std::filesystem::path(args->run.output) / "figures").string().c_str());

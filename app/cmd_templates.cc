@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "detectors/relative_threshold_detector.h"
 #include "detectors/template_library.h"
 #include "detectors/threshold_detector.h"
 
@@ -61,14 +62,24 @@ void AddTemplatesCommand(CLI::App& root) {
                  FormatDouble(library.calibration_margin).c_str(),
                  FormatDouble(library.calibration_quantile).c_str(),
                  FormatDouble(library.calibration_quantile_distance).c_str());
-    // The threshold detector calibrates on the same clean data: print its bounds as a ready --set.
-    const std::vector<double> bounds = detectors::CalibrateThresholdBounds(clean, options.threshold);
-    std::ostringstream set;
-    for (std::size_t a = 0; a < bounds.size(); ++a) set << (a ? "," : "") << FormatDouble(bounds[a]);
+    // The threshold detectors calibrate on the same clean data: print their bounds as a ready --set.
+    const auto join = [](const std::vector<double>& values) {
+      std::ostringstream out;
+      for (std::size_t a = 0; a < values.size(); ++a) out << (a ? "," : "") << FormatDouble(values[a]);
+      return out.str();
+    };
+    const detectors::ThresholdBounds bounds = detectors::CalibrateThresholdBounds(clean, options.threshold);
     std::fprintf(stderr,
-                 "vigil templates: threshold detector calibrated on the same data: --set "
-                 "detector.threshold.bounds=[%s]\n",
-                 set.str().c_str());
+                 "vigil templates: the paper's threshold detector calibrated on the same data (margin %s): "
+                 "--set detector.threshold.calibration=manual --set detector.threshold.lower=[%s] --set "
+                 "detector.threshold.upper=[%s]\n",
+                 FormatDouble(options.threshold.calibration_margin).c_str(), join(bounds.lower).c_str(),
+                 join(bounds.upper).c_str());
+    std::fprintf(
+        stderr,
+        "vigil templates: vigil's relative threshold detector calibrated on the same data: --set "
+        "detector.relative_threshold.bounds=[%s]\n",
+        join(detectors::CalibrateRelativeThresholdBounds(clean, options.relative_threshold)).c_str());
     return 0;
   });
 }

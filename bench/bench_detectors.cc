@@ -17,6 +17,7 @@
 #include "detectors/dtw_distance.h"
 #include "detectors/dtw_matcher.h"
 #include "detectors/template_library.h"
+#include "detectors/threshold_detector.h"
 
 namespace vigil::detectors {
 namespace {
@@ -94,6 +95,7 @@ void StreamBenchmark(benchmark::State& state, DetectorType type) {
     if (glitch.Bernoulli(0.01)) s.a_B.z() += glitch.Normal(50.0, 10.0);
   DetectorOptions options;
   options.type = type;
+  options.threshold = WithBounds(options.threshold, CalibrateThresholdBounds(clean, options.threshold));
   const TemplateLibrary library = BuildTemplates(clean, options.dtw);
   for (auto _ : state) {
     const DetectionResult result = DetectAndMitigate(options, raw, &library);
@@ -102,9 +104,13 @@ void StreamBenchmark(benchmark::State& state, DetectorType type) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(raw.size()));
 }
 void BM_StreamThreshold(benchmark::State& state) { StreamBenchmark(state, DetectorType::kThreshold); }
+void BM_StreamRelativeThreshold(benchmark::State& state) {
+  StreamBenchmark(state, DetectorType::kRelativeThreshold);
+}
 void BM_StreamDtw(benchmark::State& state) { StreamBenchmark(state, DetectorType::kDtw); }
 void BM_StreamHampel(benchmark::State& state) { StreamBenchmark(state, DetectorType::kHampel); }
 BENCHMARK(BM_StreamThreshold)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StreamRelativeThreshold)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StreamDtw)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_StreamHampel)->Unit(benchmark::kMicrosecond);
 

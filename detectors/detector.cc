@@ -1,11 +1,14 @@
 #include "detectors/detector.h"
 
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "core/csv.h"
 #include "core/error.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/hampel_detector.h"
+#include "detectors/relative_threshold_detector.h"
 #include "detectors/threshold_detector.h"
 
 namespace vigil::detectors {
@@ -22,10 +25,14 @@ class PassThroughDetector final : public Detector {
 }  // namespace
 
 void ValidateDetectorOptions(const DetectorOptions& options) {
-  const std::size_t axes = options.threshold.bounds.size();
-  if (axes != static_cast<std::size_t>(kNumImuAxes))
-    throw InputError("detector.threshold.bounds: expected 6 numbers (wx, wy, wz, ax, ay, az), got " +
-                     std::to_string(axes));
+  const std::pair<const char*, std::size_t> per_axis[] = {
+      {"detector.threshold.lower", options.threshold.lower.size()},
+      {"detector.threshold.upper", options.threshold.upper.size()},
+      {"detector.relative_threshold.bounds", options.relative_threshold.bounds.size()}};
+  for (const auto& [key, axes] : per_axis)
+    if (axes != static_cast<std::size_t>(kNumImuAxes))
+      throw InputError(std::string(key) + ": expected 6 numbers (wx, wy, wz, ax, ay, az), got " +
+                       std::to_string(axes));
   if (options.dtw.dims != 3 && options.dtw.dims != 6)
     throw InputError("detector.dtw.dims: must be 3 (acc) or 6 (acc + gyro), got " +
                      std::to_string(options.dtw.dims));
@@ -40,6 +47,8 @@ std::unique_ptr<Detector> MakeDetector(const DetectorOptions& options, const Tem
   switch (options.type) {
     case DetectorType::kThreshold:
       return std::make_unique<ThresholdDetector>(options.threshold);
+    case DetectorType::kRelativeThreshold:
+      return std::make_unique<RelativeThresholdDetector>(options.relative_threshold);
     case DetectorType::kHampel:
       return std::make_unique<HampelDetector>(options.hampel);
     case DetectorType::kDtw:

@@ -2,9 +2,9 @@
 //
 // A Detector takes raw IMU samples one at a time (Push) and hands back, in input order, the same samples
 // cleaned, each with the axes it flagged as abnormal. A detector may hold samples back, at most
-// latency_samples() of them (threshold: 0; Hampel: its half window; DTW: one slice minus one sample), so it
-// runs on a live stream and on a file alike; Finish() releases what is held at the end of the stream. Every
-// pushed sample comes out exactly once, with its timestamp unchanged.
+// latency_samples() of them (threshold, relative_threshold: 0; Hampel: its half window; DTW: one slice minus
+// one sample), so it runs on a live stream and on a file alike; Finish() releases what is held at the end of
+// the stream. Every pushed sample comes out exactly once, with its timestamp unchanged.
 //
 // DetectAndMitigate() is the whole-stream convenience used by `vigil clean` and by runs.
 #pragma once
@@ -39,7 +39,7 @@ class Detector {
   virtual int latency_samples() const = 0;
 };
 
-// Cross-field checks of the detector options that key bounds cannot express (threshold.bounds has 6 entries,
+// Cross-field checks of the detector options that key bounds cannot express (per-axis lists have 6 entries,
 // dtw.dims is 3 or 6, dtw.template_length <= dtw.slice_length); InputError "detector.key: reason". Run config
 // validation can call it; MakeDetector() does.
 void ValidateDetectorOptions(const DetectorOptions& options);

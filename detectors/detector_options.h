@@ -12,31 +12,79 @@
 
 namespace vigil::detectors {
 
-enum class DetectorType { kNone, kThreshold, kDtw, kHampel };
+// The detectors. threshold and dtw are the paper's rules (Long et al., IFAC 2020); relative_threshold and the
+// dtw detector with normalization linear are vigil's variants of them; hampel is an extra baseline.
+enum class DetectorType { kNone, kThreshold, kRelativeThreshold, kDtw, kHampel };
 
 inline const config::EnumNames<DetectorType>& DetectorTypeNames() {
-  static const config::EnumNames<DetectorType> names = {{"none", DetectorType::kNone},
-                                                        {"threshold", DetectorType::kThreshold},
-                                                        {"dtw", DetectorType::kDtw},
-                                                        {"hampel", DetectorType::kHampel}};
+  static const config::EnumNames<DetectorType> names = {
+      {"none", DetectorType::kNone},
+      {"threshold", DetectorType::kThreshold},
+      {"relative_threshold", DetectorType::kRelativeThreshold},
+      {"dtw", DetectorType::kDtw},
+      {"hampel", DetectorType::kHampel}};
   return names;
 }
 
-// What the threshold detector writes in place of an abnormal value.
+// What a threshold detector writes in place of an abnormal value.
 enum class ThresholdMitigation { kTruncate, kMean };
 
 inline const config::EnumNames<ThresholdMitigation>& ThresholdMitigationNames() {
-  static const config::EnumNames<ThresholdMitigation> names = {{"truncate", ThresholdMitigation::kTruncate},
+  static const config::EnumNames<ThresholdMitigation> names = {{"threshold", ThresholdMitigation::kTruncate},
                                                                {"mean", ThresholdMitigation::kMean}};
   return names;
 }
 
-// The paper's "trunc" detector, per axis. The reference of an axis is the mean of its last
-// `reference_samples` normal values; a value is abnormal when |value - reference| > bounds[axis]. Abnormal
-// values are truncated to reference +- bound (the paper's mitigation) or replaced by the reference (the mean
-// of the last normal values). Calibration from clean data: CalibrateThresholdBounds (threshold_detector.h),
-// also printed by `vigil templates`.
+// Where the paper's threshold detector gets its bounds.
+enum class ThresholdCalibration { kClean, kManual };
+
+inline const config::EnumNames<ThresholdCalibration>& ThresholdCalibrationNames() {
+  static const config::EnumNames<ThresholdCalibration> names = {{"clean", ThresholdCalibration::kClean},
+                                                                {"manual", ThresholdCalibration::kManual}};
+  return names;
+}
+
+// The paper's threshold detector ("trunc"), per axis on the measured value itself: a value above upper[axis]
+// or below lower[axis] is abnormal. Mitigation threshold: clamp to the violated bound (the paper's choice in
+// its VINS integration); mean: the mean of the axis' last n output values. Bounds: calibration clean (a run
+// calibrates them on the clean IMU of a glitch-free simulation of its scenario with another seed; `vigil
+// templates` prints them for a recording) or manual (lower / upper as given). See threshold_detector.h.
 struct ThresholdOptions {
+  ThresholdCalibration calibration = ThresholdCalibration::kClean;
+  std::vector<double> lower = {-4.0, -4.0, -4.0, -39.2, -39.2, -39.2};
+  std::vector<double> upper = {4.0, 4.0, 4.0, 39.2, 39.2, 39.2};
+  ThresholdMitigation mitigation = ThresholdMitigation::kTruncate;
+  int mean_samples = 4;
+  double calibration_margin = 1.2;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Enum(
+        "calibration", calibration, ThresholdCalibrationNames(),
+        "clean: bounds calibrated on a glitch-free simulation of the run's scenario (seed DeriveSeed(seed, "
+        "\"calibration\")); manual: lower / upper as given");
+    v.Field("lower", lower,
+            "manual: smallest normal measured value per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers; "
+            "default a +-4 rad/s, +-4 g sensor range)");
+    v.Field("upper", upper,
+            "manual: largest normal measured value per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers)");
+    v.Enum("mitigation", mitigation, ThresholdMitigationNames(),
+           "threshold: clamp an abnormal value to the bound it violated (the paper); mean: replace it by the "
+           "mean of the axis' last mean_samples output values");
+    v.Field("mean_samples", mean_samples, "n of mitigation mean", Bounds::AtLeast(1));
+    v.Field("calibration_margin", calibration_margin,
+            "calibration: bounds = centre of the clean range +- margin x its half-width, per axis",
+            Bounds::AtLeast(1.0));
+  }
+};
+
+// vigil's relative threshold detector (not the paper's rule), per axis. The reference of an axis is the mean
+// of its last `reference_samples` normal values; a value is abnormal when |value - reference| > bounds[axis].
+// Abnormal values are clamped to reference +- bound (mitigation threshold) or replaced by the reference
+// (mitigation mean). Calibration from clean data: CalibrateRelativeThresholdBounds
+// (relative_threshold_detector.h), also printed by `vigil templates`.
+struct RelativeThresholdOptions {
   std::vector<double> bounds = {1.5, 1.5, 1.5, 2.5, 2.5, 2.5};
   int reference_samples = 4;
   ThresholdMitigation mitigation = ThresholdMitigation::kTruncate;
@@ -52,8 +100,7 @@ struct ThresholdOptions {
     v.Field("reference_samples", reference_samples,
             "n: the reference is the mean of the last n normal values", Bounds::AtLeast(1));
     v.Enum("mitigation", mitigation, ThresholdMitigationNames(),
-           "truncate: clamp to reference +- bound (the paper); mean: replace by the mean of the last n "
-           "normal values");
+           "threshold: clamp to reference +- bound; mean: replace by the mean of the last n normal values");
     v.Field(
         "max_run", max_run,
         "after this many consecutive abnormal values an axis accepts the new level (re-seeds its reference)",
@@ -74,10 +121,15 @@ inline const config::EnumNames<SliceNormalization>& SliceNormalizationNames() {
   return names;
 }
 
-// The paper's DTW detector. The stream is cut into non-overlapping slices of `slice_length` samples; each
+// The DTW detector. The stream is cut into non-overlapping slices of `slice_length` samples; each
 // slice (d = `dims` channels: ax, ay, az, then wx, wy, wz when d = 6) is compared with `templates` templates
 // of `template_length` rows under the DTW distance of Algorithm 1; a best distance above the threshold marks
 // the slice abnormal and replaces it by the best template aligned along the optimal warping path.
+// normalization none (the default) is the paper's DTW: raw slices, replaced by the raw best template;
+// normalization linear is vigil's normalized DTW (sweep method `normalized_dtw`): slices compared after
+// removing a robust per-channel line, replaced by the template's shape on the slice's own line.
+// The defaults are the paper's simulation setting k = 10, N = 10, M = 40, d = 6; its real-robot setting is
+// k = 10, N = 40, M = 40, d = 3 (`--set detector.dtw.template_length=40 --set detector.dtw.dims=3`).
 // k, N, M, d and the normalization are build parameters of a template library: a library read from a file
 // carries its own, which then apply.
 struct DtwOptions {
@@ -86,7 +138,7 @@ struct DtwOptions {
   int template_length = 10;
   int slice_length = 40;
   int dims = 6;
-  SliceNormalization normalization = SliceNormalization::kLinear;
+  SliceNormalization normalization = SliceNormalization::kNone;
   double threshold = 0.0;
   double threshold_quantile = 0.99;
   double threshold_margin = 1.5;
@@ -107,8 +159,10 @@ struct DtwOptions {
     v.Field("dims", dims, "d: 3 (acc) or 6 (acc + gyro) channels compared (library build)",
             Bounds::Closed(3, 6));
     v.Enum("normalization", normalization, SliceNormalizationNames(),
-           "per-channel normalization of slices and templates before comparing: none, median (subtract the "
-           "median), linear (subtract the robust line through the medians of both halves) (library build)");
+           "per-channel normalization of slices and templates before comparing: none (the paper's raw "
+           "slices, replaced by the raw best template), median (subtract the median), linear (vigil's "
+           "normalized DTW: subtract the robust line through the medians of both halves; the replacement "
+           "keeps the slice's line) (library build)");
     v.Field("threshold", threshold,
             "DTW distance above which a slice is abnormal (0: the library's calibrated one)",
             Bounds::NonNegative());
@@ -146,14 +200,22 @@ struct HampelOptions {
 struct DetectorOptions {
   DetectorType type = DetectorType::kNone;
   ThresholdOptions threshold;
+  RelativeThresholdOptions relative_threshold;
   DtwOptions dtw;
   HampelOptions hampel;
 
   template <class V>
   void Visit(V& v) {
-    v.Enum("type", type, DetectorTypeNames(), "glitch detector + mitigation applied to the IMU stream");
-    v.Section("threshold", threshold, "threshold detector (the paper's trunc)");
-    v.Section("dtw", dtw, "DTW template detector (the paper's dtw)");
+    v.Enum("type", type, DetectorTypeNames(),
+           "glitch detector + mitigation applied to the IMU stream: threshold (the paper's trunc: value "
+           "bounds), relative_threshold (vigil: bound on the deviation from a running mean), dtw (templates; "
+           "see dtw.normalization), hampel (rolling median / MAD)");
+    v.Section("threshold", threshold,
+              "the paper's threshold detector (trunc): bounds on the measured value, clamp or mean");
+    v.Section("relative_threshold", relative_threshold,
+              "vigil's relative threshold: bound on abs(value - mean of the last n normal values)");
+    v.Section("dtw", dtw,
+              "DTW template detector: normalization none = the paper's dtw, linear = vigil's normalized DTW");
     v.Section("hampel", hampel, "Hampel filter (rolling median / MAD)");
   }
 };

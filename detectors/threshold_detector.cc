@@ -1,13 +1,13 @@
 #include "detectors/threshold_detector.h"
 
 #include <algorithm>
-#include <cmath>
+#include <string>
 
 #include "core/error.h"
 
 namespace vigil::detectors {
 
-void ThresholdDetector::AxisState::Accept(double value) {
+void ThresholdDetector::History::Add(double value) {
   const int n = static_cast<int>(ring.size());
   if (size == n) {
     sum -= ring[next];
@@ -17,72 +17,59 @@ void ThresholdDetector::AxisState::Accept(double value) {
   ring[next] = value;
   sum += value;
   next = (next + 1) % n;
-  run = 0;
-}
-
-void ThresholdDetector::AxisState::Restart(double value) {
-  next = 0, size = 0, run = 0;
-  sum = 0.0;
-  Accept(value);
 }
 
 ThresholdDetector::ThresholdDetector(const ThresholdOptions& options) : options_(options) {
-  if (options_.bounds.size() != static_cast<std::size_t>(kNumImuAxes))
-    throw InputError("detector.threshold.bounds: expected 6 numbers (wx, wy, wz, ax, ay, az), got " +
-                     std::to_string(options_.bounds.size()));
-  for (double b : options_.bounds)
-    if (!(b > 0.0)) throw InputError("detector.threshold.bounds: every bound must be > 0");
-  if (options_.reference_samples < 1) throw InputError("detector.threshold.reference_samples: must be >= 1");
-  if (options_.max_run < 1) throw InputError("detector.threshold.max_run: must be >= 1");
-  for (AxisState& axis : axes_) axis.ring.assign(options_.reference_samples, 0.0);
+  for (const auto* bounds : {&options_.lower, &options_.upper})
+    if (bounds->size() != static_cast<std::size_t>(kNumImuAxes))
+      throw InputError(std::string("detector.threshold.") + (bounds == &options_.lower ? "lower" : "upper") +
+                       ": expected 6 numbers (wx, wy, wz, ax, ay, az), got " +
+                       std::to_string(bounds->size()));
+  for (int a = 0; a < kNumImuAxes; ++a)
+    if (!(options_.lower[a] <= options_.upper[a]))
+      throw InputError("detector.threshold.lower: must be <= detector.threshold.upper on every axis (axis " +
+                       std::to_string(a) + ")");
+  if (options_.mean_samples < 1) throw InputError("detector.threshold.mean_samples: must be >= 1");
+  for (History& h : history_) h.ring.assign(options_.mean_samples, 0.0);
 }
 
 void ThresholdDetector::Push(const ImuSample& raw, std::vector<DetectedSample>* out) {
   DetectedSample result{raw, 0};
   for (int a = 0; a < kNumImuAxes; ++a) {
-    AxisState& axis = axes_[a];
-    const double value = raw.axis(a);
-    if (axis.size == 0) {
-      axis.Accept(value);
-      continue;
+    double& value = result.sample.axis(a);
+    const double lower = options_.lower[a], upper = options_.upper[a];
+    if (value > upper || value < lower) {
+      result.flagged_axes |= static_cast<uint8_t>(1u << a);
+      const double clamped = value > upper ? upper : lower;
+      History& h = history_[a];
+      value = options_.mitigation == ThresholdMitigation::kMean && h.size > 0 ? h.sum / h.size : clamped;
     }
-    const double reference = axis.Mean();
-    const double deviation = value - reference;
-    const double bound = options_.bounds[a];
-    if (std::abs(deviation) <= bound) {
-      axis.Accept(value);
-      continue;
-    }
-    if (++axis.run >= options_.max_run) {  // a persistent new level, not a glitch
-      axis.Restart(value);
-      continue;
-    }
-    result.flagged_axes |= static_cast<uint8_t>(1u << a);
-    result.sample.axis(a) = options_.mitigation == ThresholdMitigation::kTruncate
-                                ? reference + std::copysign(bound, deviation)
-                                : reference;
+    history_[a].Add(value);
   }
   out->push_back(result);
 }
 
-std::vector<double> CalibrateThresholdBounds(const ImuStream& clean, const ThresholdOptions& options) {
+ThresholdBounds CalibrateThresholdBounds(const ImuStream& clean, const ThresholdOptions& options) {
   if (clean.empty()) throw InputError("threshold calibration: the clean stream is empty");
-  const int n = std::max(1, options.reference_samples);
-  std::vector<double> bounds(kNumImuAxes, 0.0);
+  ThresholdBounds bounds;
   for (int a = 0; a < kNumImuAxes; ++a) {
-    // The detector's reference with every value normal: the mean of the previous n values.
-    double sum = 0.0, largest = 0.0;
-    for (std::size_t t = 0; t < clean.size(); ++t) {
-      const int have = static_cast<int>(std::min<std::size_t>(t, n));
-      if (have > 0) largest = std::max(largest, std::abs(clean[t].axis(a) - sum / have));
-      sum += clean[t].axis(a);
-      if (t >= static_cast<std::size_t>(n)) sum -= clean[t - n].axis(a);
+    double lo = clean.front().axis(a), hi = lo;
+    for (const ImuSample& s : clean) {
+      lo = std::min(lo, s.axis(a));
+      hi = std::max(hi, s.axis(a));
     }
-    bounds[a] = options.calibration_margin * largest;
+    const double centre = 0.5 * (hi + lo), half = 0.5 * (hi - lo) * options.calibration_margin;
+    bounds.lower.push_back(centre - half);
+    bounds.upper.push_back(centre + half);
   }
-  // A constant axis (e.g. an ideal IMU at rest) would give a zero bound: keep a tiny positive one.
-  for (double& b : bounds) b = std::max(b, 1e-9);
   return bounds;
+}
+
+ThresholdOptions WithBounds(ThresholdOptions options, const ThresholdBounds& bounds) {
+  options.lower = bounds.lower;
+  options.upper = bounds.upper;
+  options.calibration = ThresholdCalibration::kManual;
+  return options;
 }
 
 }  // namespace vigil::detectors

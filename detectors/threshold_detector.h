@@ -1,16 +1,20 @@
-// The threshold detector (the paper's "trunc"), streaming with zero latency.
+// The paper's threshold detector ("trunc", detector.type threshold), streaming with zero latency.
 //
-// Per axis (wx, wy, wz, ax, ay, az), the reference is the mean of the axis' last n = reference_samples normal
-// values: a per-axis bound on the deviation from a short causal local level, which follows the robot's motion
-// (gravity and slow accelerations) while a glitch stands out against it. A value with
-// |value - reference| > bounds[axis] is abnormal and is truncated to reference +- bound (mitigation truncate,
-// the paper's choice) or replaced by the reference itself (mitigation mean). Abnormal values never enter the
-// reference. After max_run consecutive abnormal values the axis accepts the new level: its reference restarts
-// from the current value (so a real step in the motion, e.g. hitting an obstacle, cannot lock the axis out).
-// The first value of each axis starts the reference and is always normal.
+// The paper "identifies any measurement beyond the specified threshold" and, in its VINS integration,
+// "we replace the abnormal values with the threshold". The rule here is that one, per axis (wx, wy, wz, ax,
+// ay, az) on the measured value itself: a value v with v > upper[axis] or v < lower[axis] is abnormal (a
+// value equal to a bound is normal). Mitigation threshold clamps it to the bound it violated; mitigation mean
+// (the paper's other option, "the average of the last n samples") replaces it by the mean of the axis' last
+// mean_samples output values, i.e. already mitigated ones, so a burst of glitches does not feed itself (the
+// first value of a stream has no history: it is clamped). Unlike vigil's relative threshold
+// (relative_threshold_detector.h) nothing follows the motion: the bounds must admit every value of normal
+// motion, which is the paper's tuning dilemma (a robot starting to move reads like a glitch).
 //
-// Calibration from clean data: CalibrateThresholdBounds() runs the same reference over a glitch-free stream
-// and returns, per axis, calibration_margin x the largest |value - reference| seen.
+// Calibration from clean data (never the data being cleaned): CalibrateThresholdBounds() takes, per axis, the
+// range [min, max] of a glitch-free stream and widens it about its centre by calibration_margin:
+// bounds = (max + min) / 2 -+ margin (max - min) / 2. A run with `calibration: clean` calibrates on a
+// glitch-free simulation of its scenario with seed DeriveSeed(seed, "calibration"); `vigil templates` prints
+// the bounds of a recording as a ready --set.
 #pragma once
 
 #include <array>
@@ -22,7 +26,8 @@ namespace vigil::detectors {
 
 class ThresholdDetector final : public Detector {
  public:
-  // InputError when bounds does not have 6 positive entries.
+  // Uses options.lower / options.upper whatever options.calibration says (the caller calibrates).
+  // InputError unless both have 6 entries with lower <= upper.
   explicit ThresholdDetector(const ThresholdOptions& options);
 
   void Push(const ImuSample& raw, std::vector<DetectedSample>* out) override;
@@ -30,22 +35,26 @@ class ThresholdDetector final : public Detector {
   int latency_samples() const override { return 0; }
 
  private:
-  // The running reference of one axis: a ring of the last n normal values.
-  struct AxisState {
+  // The last mean_samples output values of one axis (mitigation mean).
+  struct History {
     std::vector<double> ring;
-    int next = 0, size = 0, run = 0;
+    int next = 0, size = 0;
     double sum = 0.0;
-    void Accept(double value);
-    void Restart(double value);
-    double Mean() const { return sum / size; }
+    void Add(double value);
   };
 
   ThresholdOptions options_;
-  std::array<AxisState, kNumImuAxes> axes_;
+  std::array<History, kNumImuAxes> history_;
 };
 
-// Per-axis bounds calibrated on clean data (see above); `options` supplies reference_samples and the margin.
-// InputError when `clean` is empty.
-std::vector<double> CalibrateThresholdBounds(const ImuStream& clean, const ThresholdOptions& options);
+// Per-axis bounds from a clean stream (see above): fills bounds->lower and bounds->upper (6 each) using
+// options.calibration_margin. InputError when `clean` is empty.
+struct ThresholdBounds {
+  std::vector<double> lower, upper;
+};
+ThresholdBounds CalibrateThresholdBounds(const ImuStream& clean, const ThresholdOptions& options);
+
+// `options` with calibrated bounds and calibration manual (what a run hands to MakeDetector).
+ThresholdOptions WithBounds(ThresholdOptions options, const ThresholdBounds& bounds);
 
 }  // namespace vigil::detectors

@@ -28,8 +28,8 @@ struct EstimatorInput {
   std::vector<CameraFrame>
       frames;  // time-ordered camera frames with their observations (empty frames allowed)
   CameraModel camera;
-  ImuNoiseDensities imu_noise;
-  double gravity_mps2 = 9.81;  // g_W = (0, 0, -g)
+  ImuNoiseDensities imu_noise;  // the sensor's own densities (estimator.imu_noise says what is used)
+  double gravity_mps2 = 9.81;   // g_W = (0, 0, -g)
   std::vector<NavState>
       groundtruth;    // only read by init = groundtruth (at any rate covering the frame times)
   uint64_t seed = 0;  // run seed: the optional ground-truth init perturbation derives from it

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/config.h"
+#include "estimator/imu_noise_model.h"
 #include "estimator/init/vins_init_options.h"
 
 namespace vigil::estimator {
@@ -204,6 +205,7 @@ struct EstimatorOptions {
   FeatureOptions features;
   SolverOptions solver;
   FailureOptions failure;
+  ImuNoiseModelOptions imu_noise;
 
   template <class V>
   void Visit(V& v) {
@@ -219,6 +221,8 @@ struct EstimatorOptions {
     v.Section("solver", solver, "Ceres solve per frame");
     v.Section("failure", failure,
               "failure detection (groundtruth init: the run fails; vins: reset and re-init)");
+    v.Section("imu_noise", imu_noise,
+              "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
   }
 };
 

@@ -33,8 +33,8 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   CheckInput(input);
   const double imu_rate_hz =
       static_cast<double>(input.imu.size() - 1) / NsToS(input.imu.back().t_ns - input.imu.front().t_ns);
-  Estimator estimator(options, input.camera, input.imu_noise, input.gravity_mps2, imu_rate_hz,
-                      MakeInitializer(options, input));
+  Estimator estimator(options, input.camera, ResolveImuNoise(options.imu_noise, input.imu_noise, imu_rate_hz),
+                      input.gravity_mps2, imu_rate_hz, MakeInitializer(options, input));
   EstimatorResult result;
   try {
     for (const CameraFrame& frame : input.frames) {

@@ -5,6 +5,7 @@
 #include "core/config.h"
 #include "core/random.h"
 #include "detectors/dtw_detector.h"
+#include "detectors/threshold_detector.h"
 #include "sim/simulator.h"
 
 namespace vigil::experiments {
@@ -40,16 +41,40 @@ std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConf
   return std::make_shared<const detectors::TemplateLibrary>(BuildTemplatesFromGlitchFreeSimulation(config));
 }
 
+detectors::ThresholdBounds CalibrateThresholdFromGlitchFreeSimulation(const RunConfig& config) {
+  return detectors::CalibrateThresholdBounds(
+      sim::SimulateImu(config.sim, DeriveSeed(config.seed, "calibration")).imu, config.detector.threshold);
+}
+
+detectors::DetectorOptions ResolveDetectorOptions(const RunConfig& config) {
+  detectors::DetectorOptions options = config.detector;
+  if (options.type == detectors::DetectorType::kThreshold &&
+      options.threshold.calibration == detectors::ThresholdCalibration::kClean)
+    options.threshold =
+        detectors::WithBounds(options.threshold, CalibrateThresholdFromGlitchFreeSimulation(config));
+  return options;
+}
+
 DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
                             const detectors::TemplateLibrary* templates, bool with_glitches,
                             bool with_clean) {
   DetectionStage stage;
-  stage.result = detectors::DetectAndMitigate(config.detector, dataset.imu, templates);
+  const bool calibrate = config.detector.type == detectors::DetectorType::kThreshold &&
+                         config.detector.threshold.calibration == detectors::ThresholdCalibration::kClean;
+  const detectors::DetectorOptions options = ResolveDetectorOptions(config);
+  stage.result = detectors::DetectAndMitigate(options, dataset.imu, templates);
   stage.metrics = detectors::EvaluateDetection(dataset.imu, stage.result,
                                                with_glitches ? dataset.glitches : std::vector<GlitchRecord>{},
                                                with_clean ? dataset.imu_clean : ImuStream{});
   stage.json = detectors::DetectionJson(stage.metrics, with_glitches, with_clean);
   stage.json["detector"] = config::EnumNameOf(config.detector.type, detectors::DetectorTypeNames());
+  if (options.type == detectors::DetectorType::kThreshold) {
+    stage.json["threshold_lower"] = options.threshold.lower;
+    stage.json["threshold_upper"] = options.threshold.upper;
+    stage.json["threshold_calibration"] = calibrate ? "glitch-free simulation, seed DeriveSeed(" +
+                                                          std::to_string(config.seed) + ", \"calibration\")"
+                                                    : std::string("manual");
+  }
   if (templates) {
     stage.json["dtw_threshold"] = detectors::EffectiveDtwThreshold(config.detector.dtw, *templates);
     stage.json["templates_source"] = templates->source;

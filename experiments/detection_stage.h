@@ -3,7 +3,9 @@
 // DTW needs a template library of normal motion. Its source, in order: the library the caller passes (a sweep
 // builds one per setting and shares it), `detector.dtw.templates_file`, else a library built from the clean
 // IMU of a glitch-free simulation of the same scenario with seed DeriveSeed(seed, "templates"): never from
-// the run's own data, so the detector learns nothing about the glitches it is scored on.
+// the run's own data, so the detector learns nothing about the glitches it is scored on. The paper's
+// threshold detector with `detector.threshold.calibration: clean` likewise calibrates its bounds on a
+// glitch-free simulation (seed DeriveSeed(seed, "calibration")).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include "detectors/detection_metrics.h"
 #include "detectors/detector.h"
 #include "detectors/template_library.h"
+#include "detectors/threshold_detector.h"
 #include "experiments/run_config.h"
 
 namespace vigil::experiments {
@@ -33,6 +36,13 @@ detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfi
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const sim::SimOptions& scenario,
                                                                   const detectors::DtwOptions& dtw,
                                                                   uint64_t seed);
+
+// The paper's threshold detector with `calibration: clean`: bounds from the clean IMU of a glitch-free
+// simulation of the run's scenario with seed DeriveSeed(seed, "calibration") (never the run's own data).
+detectors::ThresholdBounds CalibrateThresholdFromGlitchFreeSimulation(const RunConfig& config);
+
+// config.detector as the run applies it: with calibrated threshold bounds when the above applies.
+detectors::DetectorOptions ResolveDetectorOptions(const RunConfig& config);
 
 struct DetectionStage {
   detectors::DetectionResult result;  // cleaned IMU + one flag per sample

@@ -8,6 +8,7 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "experiments/paper_reference.h"
+#include "experiments/reproduction.h"
 #include "experiments/results_csv.h"
 #include "experiments/statistics.h"
 
@@ -30,7 +31,7 @@ ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::stri
   t.corner = "distance";
   t.columns = methods;
   t.rows = DistanceRows(agg.distances_m);
-  t.decimals = yaw ? 2 : 3;
+  t.decimals = 2;
   t.values.assign(t.rows.size(), std::vector<double>(methods.size(), kNaN));
   for (std::size_t m = 0; m < methods.size(); ++m) {
     const int mi = agg.MethodIndex(methods[m]);
@@ -52,7 +53,7 @@ ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>
   t.corner = "method";
   t.columns = agg.groups;
   t.rows = methods;
-  t.decimals = 3;
+  t.decimals = 2;
   t.values.assign(methods.size(), std::vector<double>(agg.groups.size(), kNaN));
   for (std::size_t m = 0; m < methods.size(); ++m) {
     const int mi = agg.MethodIndex(methods[m]);
@@ -85,6 +86,16 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
        "run "
        "(a run's mean weighted by its number of segments). Paper values (Long et al., IFAC 2020) in "
        "parentheses where the row and column names match.\n\n";
+
+  s += "Methods (the sweep file's detector settings; the paper's are trunc = threshold, dtw = dtw with "
+       "normalization none, original = none; the others are vigil's variants and extra baselines, "
+       "detectors/detector_options.h gives each rule):\n\n";
+  for (const SweepSetting& m : spec.methods) {
+    s += "- `" + m.label + "`:";
+    for (const SweepOverride& o : m.overrides) s += " `" + o.key + "=" + YAML::Dump(o.value) + "`";
+    s += "\n";
+  }
+  s += "\n";
 
   const std::vector<std::string>& all = agg.methods;
   s += "## Tables of the paper\n\n";
@@ -162,6 +173,7 @@ void WriteTableFiles(const fs::path& dir, const SweepSpec& spec, const SweepAggr
     WriteFileAtomic(dir / (std::string(names[i]) + ".tex"), TableLatex(tables[i]));
   }
   WriteFileAtomic(dir / "summary.md", SummaryMarkdown(spec, agg));
+  WriteReproduction(dir, spec);
 }
 
 }  // namespace vigil::experiments

@@ -26,7 +26,8 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg);
 // summary.md (each atomically). Returns the aggregate.
 SweepAggregate WriteSweepTables(const std::filesystem::path& dir);
 
-// table2-4 (.md, .csv, .tex) and summary.md of an aggregate, each atomically (results.csv untouched).
+// table2-4 (.md, .csv, .tex), summary.md and, for the paper's grid, reproduction.md (reproduction.h) of an
+// aggregate, each atomically (results.csv untouched).
 void WriteTableFiles(const std::filesystem::path& dir, const SweepSpec& spec, const SweepAggregate& agg);
 
 // The distances of the relative errors of a sweep (its first cell's evaluation.distances_m).

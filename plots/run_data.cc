@@ -40,6 +40,13 @@ std::string MethodName(detectors::DetectorType type) {
   }
 }
 
+std::string MethodName(const detectors::DetectorOptions& detector) {
+  if (detector.type == detectors::DetectorType::kDtw &&
+      detector.dtw.normalization != detectors::SliceNormalization::kNone)
+    return "normalized_dtw";
+  return MethodName(detector.type);
+}
+
 bool MethodBefore(const std::string& a, const std::string& b) {
   const int ra = MethodRank(a), rb = MethodRank(b);
   return ra != rb ? ra < rb : a < b;
@@ -95,7 +102,7 @@ RunData LoadRunDirectory(const std::filesystem::path& dir) {
     throw InputError(config_path.string() + ": missing (not a run directory)");
   }
   run.config = experiments::LoadRunConfig(config_path.string());
-  run.method = MethodName(run.config.detector.type);
+  run.method = MethodName(run.config.detector);
   run.glitch = GlitchSettingOf(run.config);
   if (fs::is_regular_file(dir / "stamped_groundtruth.txt")) {
     run.groundtruth = ReadTumTrajectory((dir / "stamped_groundtruth.txt").string());

@@ -23,6 +23,8 @@ namespace vigil::plots {
 
 // The paper's name of a detector: threshold -> "trunc", dtw -> "dtw", none -> "original", else its type name.
 std::string MethodName(detectors::DetectorType type);
+// The same for a run's detector options: dtw with a normalization other than none is "normalized_dtw".
+std::string MethodName(const detectors::DetectorOptions& detector);
 // Order of methods in legends: original, trunc, dtw, then the others alphabetically.
 bool MethodBefore(const std::string& a, const std::string& b);
 

@@ -13,12 +13,21 @@ for f in bin/vigil share/vigil/configs/paper_sweep.yaml share/vigil/configs/pape
 done
 # The installed tree moves as a whole.
 mv "$tmp/prefix" "$tmp/moved"
-sed -i 's/^set:$/set:\n  duration_s: 3/' "$tmp/moved/share/vigil/configs/paper_sweep.yaml"
+for f in paper_sweep.yaml paper_noise_sweep.yaml; do
+  sed -i 's/^set:$/set:\n  duration_s: 3/' "$tmp/moved/share/vigil/configs/$f"
+done
 (cd "$tmp" && "$tmp/moved/bin/vigil" paper -o "$tmp/paper" --seeds 1 -j 2 --quiet)
 [[ -f $tmp/paper/table2.md && -f $tmp/paper/summary.md && -f $tmp/paper/figures/fig6_summary.png ]] ||
   { echo "vigil paper from the prefix did not write its tables and figures"; exit 1; }
+# One run per cell of the installed sweep (its methods x glitch settings, 1 seed), and the noise ablation beside.
+methods=$(sed -n '/^methods:/,/^[a-z_]*:/p' "$tmp/moved/share/vigil/configs/paper_sweep.yaml" | grep -c '^  [a-z_]*:')
 runs=$(ls "$tmp/paper/runs" | wc -l)
-[[ $runs == 12 ]] || { echo "expected 12 runs (3 settings x 4 methods x 1 seed), got $runs"; exit 1; }
+[[ $methods -ge 3 && $runs == $((3 * methods)) ]] ||
+  { echo "expected $((3 * methods)) runs (3 settings x $methods methods x 1 seed), got $runs"; exit 1; }
+[[ -f $tmp/paper/reproduction.md && -f $tmp/paper/noise_ablation/results.csv ]] ||
+  { echo "vigil paper from the prefix did not write reproduction.md and the noise ablation"; exit 1; }
+grep -q '"duration_s": 3' "$tmp/paper/noise_ablation/runs/noise_0_1-vins_euroc-dtw-s001/metrics.json" ||
+  { echo "the noise ablation did not use the installed paper_noise_sweep.yaml"; exit 1; }
 grep -q '"duration_s": 3' "$tmp/paper/runs/noise_0_1-dtw-s001/metrics.json" ||
   { echo "the runs did not use the installed paper_sweep.yaml"; exit 1; }
 # --sweep overrides.

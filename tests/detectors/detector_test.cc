@@ -13,7 +13,7 @@ namespace {
 // Every detector: one output per input, timestamps unchanged, bounded latency, and the same output whether
 // the stream is consumed sample by sample or as a whole.
 TEST(Detector, EveryDetectorStreamsEverySampleOnceWithBoundedLatency) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), {});
+  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
   ImuStream raw = testing::SyntheticImu(4, 1234);
   testing::InjectGlitches(&raw, 4, 50.0, 10.0, 0.02);
   for (const auto& [name, type] : DetectorTypeNames()) {
@@ -50,11 +50,11 @@ TEST(Detector, NoneFlagsNothingAndChangesNothing) {
 
 // N(0, 1) glitches sit inside the sensor noise: no detector should raise many alarms on them.
 TEST(Detector, SmallGlitchesRaiseFewFalseAlarms) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), {});
+  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
   const ImuStream clean = testing::SyntheticImu(2, 4001);
   ImuStream raw = clean;
   const auto glitches = testing::InjectGlitches(&raw, 2, 0.0, 1.0, 0.01);
-  for (DetectorType type : {DetectorType::kThreshold, DetectorType::kDtw}) {
+  for (DetectorType type : {DetectorType::kRelativeThreshold, DetectorType::kDtw}) {
     DetectorOptions options;
     options.type = type;
     const DetectionMetrics m =
@@ -71,10 +71,10 @@ namespace {
 
 TEST(Detector, ValidatesCrossFieldOptions) {
   DetectorOptions options;
-  options.threshold.bounds = {1.0, 1.0};
+  options.relative_threshold.bounds = {1.0, 1.0};
   EXPECT_NE(vigil::testing::InputErrorOf([&] {
               ValidateDetectorOptions(options);
-            }).find("detector.threshold.bounds"),
+            }).find("detector.relative_threshold.bounds"),
             std::string::npos);
   options = {};
   options.dtw.dims = 4;
@@ -94,7 +94,7 @@ namespace vigil::detectors {
 namespace {
 
 TEST(Detector, EmptyAndTinyStreams) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), {});
+  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
   for (const auto& [name, type] : DetectorTypeNames()) {
     DetectorOptions options;
     options.type = type;

@@ -1,5 +1,7 @@
 #include "detectors/dtw_detector.h"
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "detectors/detection_metrics.h"
@@ -13,7 +15,8 @@ namespace {
 class DtwDetectorTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    library_ = new TemplateLibrary(BuildTemplates(testing::SyntheticImu(1000, 4001), {}));
+    library_ =
+        new TemplateLibrary(BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw()));
   }
   static void TearDownTestSuite() { delete library_; }
   static DetectorOptions Options() {
@@ -114,6 +117,64 @@ TEST(DtwNormalization, EveryChoiceFindsLargeGlitches) {
     EXPECT_GE(m.recall, 0.95) << name;
     EXPECT_LT(m.imu_rmse_cleaned, m.imu_rmse_raw / 3) << name;
   }
+}
+
+}  // namespace
+}  // namespace vigil::detectors
+
+namespace vigil::detectors {
+namespace {
+
+// One template of 10 rows at rest (a = (0, 0, 9.81)), M = 40, d = 3, threshold 10.
+TemplateLibrary RestLibrary(SliceNormalization normalization) {
+  TemplateLibrary lib;
+  lib.slice_length = 40;
+  lib.template_length = 10;
+  lib.dims = 3;
+  lib.normalization = normalization;
+  lib.threshold = 10.0;
+  const bool raw = normalization == SliceNormalization::kNone;
+  for (int j = 0; j < 10; ++j) lib.values.insert(lib.values.end(), {0.0, 0.0, raw ? 9.81 : 0.0});
+  return lib;
+}
+
+ImuStream Level(double az, int spike_at = -1) {
+  ImuStream imu(40);
+  for (int t = 0; t < 40; ++t) {
+    imu[t].t_ns = t * 5000000LL;
+    imu[t].a_B.z() = az + (t == spike_at ? 50.0 : 0.0);
+  }
+  return imu;
+}
+
+DetectionResult Clean(const TemplateLibrary& lib, const ImuStream& imu) {
+  DetectorOptions det;
+  det.type = DetectorType::kDtw;
+  return DetectAndMitigate(det, imu, &lib);
+}
+
+TEST(DtwRawVsNormalized, RawReplacesAGlitchedSliceByTheBestTemplateItself) {
+  const TemplateLibrary raw = RestLibrary(SliceNormalization::kNone);
+  const DetectionResult r = Clean(raw, Level(9.81, 20));
+  for (int t = 0; t < 40; ++t) {
+    EXPECT_EQ(r.flagged[t], 1) << t;  // the whole slice
+    EXPECT_DOUBLE_EQ(r.cleaned[t].a_B.z(), 9.81) << t;
+  }
+}
+
+TEST(DtwRawVsNormalized, ALevelAwayFromEveryTemplateIsAbnormalRawButNormalAfterNormalization) {
+  // A real, steady 3 m/s^2 above the templates: raw DTW sees 40 x 3^2 = 360 > 10 and writes the template's
+  // level over it; the normalized comparison removes the level and sees a perfect match.
+  const DetectionResult raw = Clean(RestLibrary(SliceNormalization::kNone), Level(12.81));
+  EXPECT_EQ(raw.flagged[0], 1);
+  EXPECT_DOUBLE_EQ(raw.cleaned[5].a_B.z(), 9.81);
+  const DetectionResult normalized = Clean(RestLibrary(SliceNormalization::kLinear), Level(12.81));
+  EXPECT_EQ(std::count(normalized.flagged.begin(), normalized.flagged.end(), 1), 0);
+  EXPECT_DOUBLE_EQ(normalized.cleaned[5].a_B.z(), 12.81);
+  // With a spike, the normalized replacement keeps the slice's own level (its robust baseline).
+  const DetectionResult spiked = Clean(RestLibrary(SliceNormalization::kLinear), Level(12.81, 20));
+  EXPECT_EQ(spiked.flagged[20], 1);
+  EXPECT_NEAR(spiked.cleaned[20].a_B.z(), 12.81, 1e-9);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "detectors/detector.h"
 #include "detectors/template_library.h"
 #include "sim/simulator.h"
+#include "synthetic_imu.h"
 
 namespace vigil::detectors {
 namespace {
@@ -25,7 +26,8 @@ sim::SimOptions Scenario(bool glitches, double mean, double std) {
 class PaperScenario : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    library_ = new TemplateLibrary(BuildTemplates(sim::Simulate(Scenario(false, 0, 1), 1000).imu_clean, {}));
+    library_ = new TemplateLibrary(
+        BuildTemplates(sim::Simulate(Scenario(false, 0, 1), 1000).imu_clean, testing::NormalizedDtw()));
   }
   static void TearDownTestSuite() { delete library_; }
   static DetectionMetrics Run(DetectorType type, const Dataset& data) {
@@ -42,7 +44,7 @@ TEST_F(PaperScenario, LargeGlitchesAreFoundAndMitigated) {
   for (uint64_t seed : {1, 2}) {
     const Dataset data = sim::Simulate(Scenario(true, 50, 10), seed);
     ASSERT_GT(data.glitches.size(), 10u);
-    const DetectionMetrics threshold = Run(DetectorType::kThreshold, data);
+    const DetectionMetrics threshold = Run(DetectorType::kRelativeThreshold, data);
     const DetectionMetrics dtw = Run(DetectorType::kDtw, data);
     const DetectionMetrics hampel = Run(DetectorType::kHampel, data);
     EXPECT_GE(threshold.f1, 0.9) << seed;
@@ -57,7 +59,7 @@ TEST_F(PaperScenario, LargeGlitchesAreFoundAndMitigated) {
 
 TEST_F(PaperScenario, GlitchesInsideTheNoiseRaiseFewFalseAlarms) {
   const Dataset data = sim::Simulate(Scenario(true, 0, 1), 3);
-  const DetectionMetrics threshold = Run(DetectorType::kThreshold, data);
+  const DetectionMetrics threshold = Run(DetectorType::kRelativeThreshold, data);
   const DetectionMetrics dtw = Run(DetectorType::kDtw, data);
   const DetectionMetrics hampel = Run(DetectorType::kHampel, data);
   EXPECT_LT(threshold.false_positive_rate, 0.005);
@@ -74,7 +76,7 @@ TEST_F(PaperScenario, GlitchesInsideTheNoiseRaiseFewFalseAlarms) {
 TEST_F(PaperScenario, CleanRunsOfOtherSeedsAreRarelyFlagged) {
   const Dataset data = sim::Simulate(Scenario(false, 0, 1), 4);
   EXPECT_LE(Run(DetectorType::kDtw, data).flagged_segments, 2);
-  EXPECT_EQ(Run(DetectorType::kThreshold, data).flagged_samples, 0);
+  EXPECT_EQ(Run(DetectorType::kRelativeThreshold, data).flagged_samples, 0);
 }
 
 }  // namespace
@@ -96,10 +98,10 @@ sim::SimOptions RescueCourse(bool glitches) {
 
 TEST(RescueCourse, LegitimateBumpsRaiseFewFalseAlarmsAndGlitchesAreStillFound) {
   const Dataset templates_run = sim::Simulate(RescueCourse(false), 1000);
-  const TemplateLibrary library = BuildTemplates(templates_run.imu_clean, {});
+  const TemplateLibrary library = BuildTemplates(templates_run.imu_clean, testing::NormalizedDtw());
   const Dataset clean = sim::Simulate(RescueCourse(false), 1),
                 glitched = sim::Simulate(RescueCourse(true), 1);
-  for (DetectorType type : {DetectorType::kThreshold, DetectorType::kDtw, DetectorType::kHampel}) {
+  for (DetectorType type : {DetectorType::kRelativeThreshold, DetectorType::kDtw, DetectorType::kHampel}) {
     DetectorOptions options;
     options.type = type;
     const DetectionMetrics on_clean =

@@ -7,8 +7,16 @@
 
 #include "core/random.h"
 #include "core/types.h"
+#include "detectors/detector_options.h"
 
 namespace vigil::detectors::testing {
+
+// vigil's normalized DTW (linear baseline removed), the variant these detection-quality tests were tuned on.
+inline DtwOptions NormalizedDtw() {
+  DtwOptions o;
+  o.normalization = SliceNormalization::kLinear;
+  return o;
+}
 
 inline ImuStream SyntheticImu(uint64_t seed, int samples, double noise_scale = 1.0) {
   Rng rng(seed, "synthetic_imu");

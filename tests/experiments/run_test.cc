@@ -179,7 +179,7 @@ TEST(Run, BadInputWritesNothing) {
   EXPECT_EQ(InputErrorOf([&] { RunToDirectory(kPaper, {"glitch.rate=2"}, RunOptions{}, dir, false); }),
             "--set: glitch.rate: must be in [0, 1]");
   EXPECT_NE(InputErrorOf([&] {
-              RunToDirectory(kPaper, {"detector.threshold.bounds=[1, 2]"}, RunOptions{}, dir, false);
+              RunToDirectory(kPaper, {"detector.threshold.lower=[1, 2]"}, RunOptions{}, dir, false);
             }),
             "");
   const std::string bad = tmp.File("bad.yaml", "seed: 1\nestimator:\n  init: magic\n");

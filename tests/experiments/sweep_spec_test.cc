@@ -80,7 +80,7 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
   const std::string f = (dir.path() / "bad.yaml").string();
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\nsurprise: 1\n"), f + ":4: surprise: unknown key");
   EXPECT_EQ(error("methods: {a: nonsense}\nseeds: [1]\n"),
-            f + ":2: detector.type: must be one of: none, threshold, dtw, hampel");
+            f + ":2: detector.type: must be one of: none, threshold, relative_threshold, dtw, hampel");
   EXPECT_EQ(error("axes:\n  glitch:\n    big: {mean: 5, loudness: 3}\nmethods: {a: none}\nseeds: [1]\n"),
             f + ":4: glitch.loudness: unknown key");
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1, 1]\n"), f + ":3: seeds: seeds must be distinct");
@@ -114,7 +114,7 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
 
 TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
   const SweepSpec paper = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_sweep.yaml");
-  EXPECT_EQ(paper.run_count(), 3u * 4u * 10u);
+  EXPECT_EQ(paper.run_count(), 3u * 6u * 10u);
   EXPECT_EQ(paper.table_methods, (std::vector<std::string>{"trunc", "dtw", "original"}));
   const auto cells = EnumerateCells(paper);
   const auto runs = EnumerateRuns(paper, cells);
@@ -125,16 +125,29 @@ TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
     EXPECT_TRUE(c.sim.glitch.enabled);
     EXPECT_EQ(c.sim.duration_s, 20.0);
   }
-  const RunConfig big = ResolveCellConfig(paper, cells[8]);  // noise_50_10 x trunc
+  const RunConfig big = ResolveCellConfig(paper, cells[12]);  // noise_50_10 x trunc
   EXPECT_EQ(big.sim.glitch.mean, 50.0);
   EXPECT_EQ(big.detector.type, detectors::DetectorType::kThreshold);
+  // The paper's dtw compares raw slices; vigil's normalized_dtw removes a line.
+  EXPECT_EQ(ResolveCellConfig(paper, cells[13]).detector.dtw.normalization,
+            detectors::SliceNormalization::kNone);
+  EXPECT_EQ(ResolveCellConfig(paper, cells[16]).detector.dtw.normalization,
+            detectors::SliceNormalization::kLinear);
+  EXPECT_EQ(ResolveCellConfig(paper, cells[15]).detector.type, detectors::DetectorType::kRelativeThreshold);
+
+  const SweepSpec noise = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_noise_sweep.yaml");
+  const auto noise_cells = EnumerateCells(noise);
+  ASSERT_EQ(noise_cells.size(), 3u * 2u * 3u);
+  EXPECT_EQ(CellGroupLabel(noise, noise_cells[0]), "noise_0_1-densities_as_per_sample");
+  EXPECT_EQ(ResolveCellConfig(noise, noise_cells[3]).estimator.imu_noise.model,
+            estimator::ImuNoiseModel::kVinsEuroc);
   SweepSpec ten = paper;
   SetSeedCount(&ten, 3);
   EXPECT_EQ(ten.seeds, (std::vector<uint64_t>{1, 2, 3}));
   EXPECT_NE(InputErrorOf([&] { SetSeedCount(&ten, 1000); }).find("template seed 1000"), std::string::npos);
 
   const SweepSpec ci = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/ci_sweep.yaml");
-  EXPECT_EQ(ci.run_count(), 18u);
+  EXPECT_EQ(ci.run_count(), 30u);
   EXPECT_FALSE(ci.write_trajectories);
   EXPECT_FALSE(ci.write_figure_data);    // the accuracy gate keeps its runs small
   EXPECT_TRUE(paper.write_figure_data);  // the paper's figures draw what its runs recorded

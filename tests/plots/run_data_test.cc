@@ -37,6 +37,12 @@ TEST(RunData, MethodNamesFollowThePaper) {
   EXPECT_EQ(MethodName(detectors::DetectorType::kDtw), "dtw");
   EXPECT_EQ(MethodName(detectors::DetectorType::kNone), "original");
   EXPECT_EQ(MethodName(detectors::DetectorType::kHampel), "hampel");
+  EXPECT_EQ(MethodName(detectors::DetectorType::kRelativeThreshold), "relative_threshold");
+  detectors::DetectorOptions dtw;
+  dtw.type = detectors::DetectorType::kDtw;
+  EXPECT_EQ(MethodName(dtw), "dtw");
+  dtw.dtw.normalization = detectors::SliceNormalization::kLinear;
+  EXPECT_EQ(MethodName(dtw), "normalized_dtw");
   EXPECT_TRUE(MethodBefore("original", "dtw"));
   EXPECT_TRUE(MethodBefore("dtw", "hampel"));
 }
