@@ -6,6 +6,7 @@
 
 #include "core/config.h"
 #include "estimator/init/vins_init_options.h"
+#include "estimator/mitigation_options.h"
 
 namespace vigil::estimator {
 
@@ -198,6 +199,7 @@ struct EstimatorOptions {
   FeatureOptions features;
   SolverOptions solver;
   FailureOptions failure;
+  MitigationOptions mitigation;
 
   template <class V>
   void Visit(V& v) {
@@ -213,6 +215,7 @@ struct EstimatorOptions {
     v.Section("solver", solver, "Ceres solve per frame");
     v.Section("failure", failure,
               "failure detection (groundtruth init: the run fails; vins: reset and re-init)");
+    v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
   }
 };
 

@@ -45,9 +45,10 @@ DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
                             bool with_clean) {
   DetectionStage stage;
   stage.result = detectors::DetectAndMitigate(config.detector, dataset.imu, templates);
-  stage.metrics = detectors::EvaluateDetection(dataset.imu, stage.result,
-                                               with_glitches ? dataset.glitches : std::vector<GlitchRecord>{},
-                                               with_clean ? dataset.imu_clean : ImuStream{});
+  stage.metrics = detectors::EvaluateDetection(
+      dataset.imu, stage.result,
+      with_glitches ? OffsetGlitches(dataset.glitches) : std::vector<GlitchRecord>{},
+      with_clean ? dataset.imu_clean : ImuStream{});
   stage.json = detectors::DetectionJson(stage.metrics, with_glitches, with_clean);
   stage.json["detector"] = config::EnumNameOf(config.detector.type, detectors::DetectorTypeNames());
   if (templates) {
