@@ -93,7 +93,7 @@ void AddCleanCommand(CLI::App& root) {
       imu_clean = ReadImuCsv(clean_path.string());
       CheckSameSamples(raw, imu_clean, clean_path.string());
     }
-    if (has_glitches) glitches = ReadGlitchesCsv(glitches_path.string());
+    if (has_glitches) glitches = OffsetGlitches(ReadGlitchesCsv(glitches_path.string()));
 
     const detectors::DetectionResult result = detectors::DetectAndMitigate(options, raw, library.get());
     const detectors::DetectionMetrics metrics =

@@ -38,6 +38,8 @@ void AddRunCommand(CLI::App& root);
 void AddSweepCommand(CLI::App& root);
 void AddTablesCommand(CLI::App& root);
 void AddPaperCommand(CLI::App& root);
+void AddMapCommand(CLI::App& root);
+void AddRocCommand(CLI::App& root);
 void AddRegressCommand(CLI::App& root);
 void AddSlurmCommand(CLI::App& root);
 

@@ -45,6 +45,8 @@ int main(int argc, char** argv) {
   AddPlotCommand(root);
   AddSweepCommand(root);
   AddPaperCommand(root);
+  AddMapCommand(root);
+  AddRocCommand(root);
   AddTablesCommand(root);
   AddRegressCommand(root);
   AddSlurmCommand(root);

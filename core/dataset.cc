@@ -1,5 +1,6 @@
 #include "core/dataset.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -52,6 +53,14 @@ Eigen::Quaterniond ReadUnitQuaternion(const CsvReader& r, double w, double x, do
 
 }  // namespace
 
+std::vector<GlitchRecord> OffsetGlitches(const std::vector<GlitchRecord>& records) {
+  std::vector<GlitchRecord> out;
+  out.reserve(records.size());
+  for (const GlitchRecord& g : records)
+    if (g.kind == FaultKind::kOffset) out.push_back(g);
+  return out;
+}
+
 std::string ImuCsv(const ImuStream& imu) {
   CsvWriter w(kImuHeader);
   for (const auto& s : imu) {
@@ -69,7 +78,9 @@ ImuStream ReadImuCsv(const std::string& path) {
   while (r.Next()) {
     ImuSample s;
     s.t_ns = r.Int(0);
-    CheckIncreasing(r, s.t_ns, &last);
+    // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
+    // keeps the first of them); a timestamp going backwards is an error.
+    CheckIncreasing(r, s.t_ns, &last, /*allow_equal=*/true);
     for (int i = 0; i < kNumImuAxes; ++i) s.axis(i) = r.Double(1 + i);
     imu.push_back(s);
   }
@@ -78,24 +89,45 @@ ImuStream ReadImuCsv(const std::string& path) {
 }
 
 std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches) {
-  CsvWriter w("timestamp [ns],axis,offset");
+  CsvWriter w("timestamp [ns],axis,offset,kind");
   for (const auto& g : glitches) {
-    w << g.t_ns << ImuAxisName(g.axis) << g.offset;
+    w << g.t_ns << (IsTimingFault(g.kind) ? "t" : ImuAxisName(g.axis)) << g.offset << FaultKindName(g.kind);
     w.EndRow();
   }
   return w.Str();
 }
 
+namespace {
+
+// Columns of the header line of `path` (0 when it cannot be read: CsvReader then reports the problem).
+std::size_t HeaderColumns(const std::string& path) {
+  std::ifstream in(path);
+  std::string header;
+  if (!std::getline(in, header)) return 0;
+  return static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+}
+
+}  // namespace
+
 std::vector<GlitchRecord> ReadGlitchesCsv(const std::string& path) {
-  CsvReader r(path, 3, "timestamp [ns], axis, offset");
+  // The three-column form (before fault kinds) holds offsets only.
+  const bool with_kind = HeaderColumns(path) != 3;
+  CsvReader r(path, with_kind ? 4 : 3,
+              with_kind ? "timestamp [ns], axis, offset, kind" : "timestamp [ns], axis, offset");
   std::vector<GlitchRecord> out;
   int64_t last = INT64_MIN;
   while (r.Next()) {
     GlitchRecord g;
     g.t_ns = r.Int(0);
+    if (with_kind && !ParseFaultKind(std::string(r.Text(3)), &g.kind))
+      r.Fail("kind: expected one of offset, saturation, drop, duplicate, jitter, got '" +
+             std::string(r.Text(3)) + "'");
     CheckIncreasing(r, g.t_ns, &last, /*allow_equal=*/true);
-    if (!ParseImuAxis(std::string(r.Text(1)), &g.axis))
+    if (IsTimingFault(g.kind)) {
+      if (r.Text(1) != "t") r.Fail("axis: expected 't' for the timing fault kind " + std::string(r.Text(3)));
+    } else if (!ParseImuAxis(std::string(r.Text(1)), &g.axis)) {
       r.Fail("axis: expected one of wx, wy, wz, ax, ay, az, got '" + std::string(r.Text(1)) + "'");
+    }
     g.offset = r.Double(2);
     out.push_back(g);
   }
@@ -120,7 +152,9 @@ std::vector<NavState> ReadGroundTruthCsv(const std::string& path) {
   while (r.Next()) {
     NavState s;
     s.t_ns = r.Int(0);
-    CheckIncreasing(r, s.t_ns, &last);
+    // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
+    // keeps the first of them); a timestamp going backwards is an error.
+    CheckIncreasing(r, s.t_ns, &last, /*allow_equal=*/true);
     s.p_W = Eigen::Vector3d(r.Double(1), r.Double(2), r.Double(3));
     s.q_WB = ReadUnitQuaternion(r, r.Double(4), r.Double(5), r.Double(6), r.Double(7));
     s.v_W = Eigen::Vector3d(r.Double(8), r.Double(9), r.Double(10));

@@ -16,10 +16,10 @@ namespace vigil {
 struct Dataset {
   ImuStream imu;                       // measured (glitches included)
   ImuStream imu_clean;                 // the same samples without the injected glitches
-  std::vector<GlitchRecord> glitches;  // one row per (sample, axis)
+  std::vector<GlitchRecord> glitches;  // injected faults (one row per sample and axis, or per sample)
   std::vector<NavState> groundtruth;   // at IMU rate
   std::vector<Landmark> landmarks;
-  std::vector<CameraFrame> frames;     // feature tracks per camera frame (frames without features included)
+  std::vector<CameraFrame> frames;  // feature tracks per camera frame (frames without features included)
   CameraModel camera;
 };
 
@@ -34,6 +34,10 @@ inline constexpr const char* kLandmarks = "landmarks.csv";
 inline constexpr const char* kFeatures = "features.csv";
 inline constexpr const char* kCamera = "camera.yaml";
 }  // namespace dataset_files
+
+// The records of kind offset (the glitches a detector is scored on: the paper's fault); saturation and timing
+// records describe other faults.
+std::vector<GlitchRecord> OffsetGlitches(const std::vector<GlitchRecord>& records);
 
 // Serialization of each file (the text is what is written; reading parses a path).
 std::string ImuCsv(const ImuStream& imu);
@@ -50,7 +54,8 @@ std::vector<NavState> ReadGroundTruthCsv(const std::string& path);
 std::vector<Landmark> ReadLandmarksCsv(const std::string& path);
 // Groups rows by timestamp. Camera frames with no visible feature do not appear in the file; pass the
 // camera rate's frame times in `frame_times_ns` to get them back as empty frames (or leave it empty).
-std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path, const std::vector<int64_t>& frame_times_ns = {});
+std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
+                                         const std::vector<int64_t>& frame_times_ns = {});
 CameraModel ReadCameraYaml(const std::string& path);
 
 // Camera frame times of a recording: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while

@@ -21,4 +21,20 @@ bool ParseImuAxis(const std::string& name, ImuAxis* axis) {
   return false;
 }
 
+namespace {
+constexpr const char* kFaultKindNames[] = {"offset", "saturation", "drop", "duplicate", "jitter"};
+}  // namespace
+
+const char* FaultKindName(FaultKind kind) { return kFaultKindNames[static_cast<int>(kind)]; }
+
+bool ParseFaultKind(const std::string& name, FaultKind* kind) {
+  for (int i = 0; i < 5; ++i) {
+    if (name == kFaultKindNames[i]) {
+      *kind = static_cast<FaultKind>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace vigil

@@ -78,11 +78,28 @@ struct CameraFrame {
   std::vector<FeatureObservation> features;
 };
 
-// One injected glitch: `offset` was added to `axis` of the IMU sample at t_ns.
+// What an injected IMU fault did to one sample (the kind column of glitches.csv).
+//   offset      `offset` was added to `axis` (the paper's N(mu, sigma) glitch)
+//   saturation  `axis` was clipped to the sensor's range; `offset` = clipped - unclipped value
+//   drop        the sample was lost (it is not in imu.csv); t_ns is its true time, offset 0
+//   duplicate   the sample carries the previous sample's timestamp; offset = written - true time [ns]
+//   jitter      the sample's timestamp was shifted; offset = written - true time [ns]
+// Timing kinds concern the whole sample: their axis is not meaningful (written "t" in glitches.csv).
+enum class FaultKind : int { kOffset = 0, kSaturation, kDrop, kDuplicate, kJitter };
+// "offset", "saturation", "drop", "duplicate", "jitter".
+const char* FaultKindName(FaultKind kind);
+// Parses a FaultKindName; returns false for anything else.
+bool ParseFaultKind(const std::string& name, FaultKind* kind);
+// Whether `kind` changes a sample's timestamp or presence rather than its values.
+inline bool IsTimingFault(FaultKind kind) { return kind >= FaultKind::kDrop; }
+
+// One injected fault on one sample (and axis, for the value kinds). t_ns is the timestamp the sample carries
+// in the measured stream (for a dropped sample: its true time).
 struct GlitchRecord {
   int64_t t_ns = 0;
   ImuAxis axis = ImuAxis::kAz;
   double offset = 0.0;
+  FaultKind kind = FaultKind::kOffset;
 };
 
 }  // namespace vigil

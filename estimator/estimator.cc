@@ -106,15 +106,15 @@ void Estimator::Predict(Frame* frame) const {
 }
 
 FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n,
-                                const ImuStream& imu) {
+                                const ImuStream& imu, const std::vector<double>* imu_variance_scale) {
   auto frame = std::make_unique<Frame>();
   frame->id = next_frame_id_++;
   frame->t_ns = t_ns;
   frame->features_n = features_n;
   if (!window_.empty()) {
     const NavState prev = window_.back()->State();
-    frame->imu_from_prev =
-        PreintegrateInterval(imu, window_.back()->t_ns, t_ns, prev.b_a, prev.b_g, noise_, imu_rate_hz_);
+    frame->imu_from_prev = PreintegrateInterval(imu, window_.back()->t_ns, t_ns, prev.b_a, prev.b_g, noise_,
+                                                imu_rate_hz_, imu_variance_scale);
     if (initialized_) Predict(frame.get());
   }
   const int tracked = features_.AddFrame(frame->id, features_n);

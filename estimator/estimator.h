@@ -30,6 +30,7 @@
 #include "estimator/estimator_input.h"
 #include "estimator/estimator_options.h"
 #include "estimator/feature_manager.h"
+#include "estimator/imu_gating.h"
 #include "estimator/initializer.h"
 #include "estimator/marginalization.h"
 #include "estimator/pose_manifold.h"
@@ -54,8 +55,10 @@ class Estimator {
   ~Estimator();
 
   // Processes the camera frame at t_ns with its features (id -> normalized point). `imu` must cover the time
-  // from the previous frame to t_ns.
-  FrameStatus AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n, const ImuStream& imu);
+  // from the previous frame to t_ns; `imu_variance_scale` (null or one per sample of `imu`): each sample's
+  // white-noise variance scale in preintegration (imu_trust.h).
+  FrameStatus AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n, const ImuStream& imu,
+                       const std::vector<double>* imu_variance_scale = nullptr);
 
   NavState newest_state() const;
   bool initialized() const { return initialized_; }
@@ -65,6 +68,7 @@ class Estimator {
   // Marginalizations that failed (nothing left to keep, or non-finite numbers): the prior was dropped.
   int marginalization_failures() const { return marginalization_failures_; }
   const EstimatorTiming& timing() const { return timing_; }
+  const GatingStats& gating() const { return gating_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
 
  private:
@@ -135,6 +139,7 @@ class Estimator {
   int keyframes_ = 0;
   int marginalization_failures_ = 0;
   EstimatorTiming timing_;
+  GatingStats gating_;
 };
 
 }  // namespace vigil::estimator

@@ -33,6 +33,19 @@ struct EstimatorInput {
   std::vector<NavState>
       groundtruth;    // only read by init = groundtruth (at any rate covering the frame times)
   uint64_t seed = 0;  // run seed: the optional ground-truth init perturbation derives from it
+  // Empty, or one per imu sample: 1 where a detector flagged the sample (read by
+  // estimator.mitigation.inflate).
+  std::vector<uint8_t> imu_flagged;
+};
+
+// What in-estimator mitigation and the timestamp check did over a run (mitigation_options.h).
+struct MitigationStats {
+  int repeated_timestamps = 0;  // IMU samples dropped because their timestamp did not increase
+  int inflated_samples = 0;     // flagged samples with inflated noise
+  int clipped_samples = 0;      // samples at the full-scale range with inflated noise
+  int gate_tests = 0;           // IMU factor chi-square tests
+  int gated_factors = 0;        // failing tests (factor inflated)
+  int gated_resolves = 0;       // solves repeated after gating
 };
 
 // Wall-clock cost of the estimator's stages, summed over the run.
@@ -58,6 +71,7 @@ struct EstimatorResult {
   int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
   int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time
   EstimatorTiming timing;
+  MitigationStats mitigation;
 };
 
 }  // namespace vigil::estimator

@@ -61,7 +61,8 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
   // The newest frame's IMU now starts at the frame before the dropped one.
   if (second_newest.imu_from_prev) {
     Preintegration merged = *second_newest.imu_from_prev;
-    for (const Preintegration::Step& s : newest.imu_from_prev->steps()) merged.Push(s.dt_s, s.a_B, s.w_B);
+    for (const Preintegration::Step& s : newest.imu_from_prev->steps())
+      merged.Push(s.dt_s, s.a_B, s.w_B, s.variance_scale);
     newest.imu_from_prev = std::move(merged);
   } else {
     newest.imu_from_prev.reset();

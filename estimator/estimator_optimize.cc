@@ -12,6 +12,7 @@
 #include "core/so3.h"
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
+#include "estimator/imu_gating.h"
 
 namespace vigil::estimator {
 namespace {
@@ -127,10 +128,13 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   }
   // A bias-only prior: it does not fix the gauge, so it is independent of the branch above.
   if (bias_prior_) problem.AddResidualBlock(bias_prior_.get(), nullptr, speed_bias.front());
+  std::vector<ImuTerm> imu_terms;
   for (std::size_t k = 1; k < window_.size(); ++k) {
     auto factor = std::make_unique<ImuFactor>(*window_[k]->imu_from_prev, g_W_);
-    problem.AddResidualBlock(factor.get(), nullptr, window_[k - 1]->pose, speed_bias[k - 1], window_[k]->pose,
-                             speed_bias[k]);
+    imu_terms.push_back(
+        {factor.get(), {window_[k - 1]->pose, speed_bias[k - 1], window_[k]->pose, speed_bias[k]}});
+    problem.AddResidualBlock(factor.get(), nullptr, imu_terms.back().blocks[0], imu_terms.back().blocks[1],
+                             imu_terms.back().blocks[2], imu_terms.back().blocks[3]);
     costs.push_back(std::move(factor));
   }
   std::vector<ReprojectionTerm> reprojections;
@@ -166,6 +170,13 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   if (options_.solver.accepted_steps > 0) solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
+  // In-estimator mitigation: IMU factors failing their chi-square gate are inflated, then one more solve.
+  if (summary.IsSolutionUsable() && GateImuFactors(options_.mitigation.gating, imu_terms, &gating_) > 0) {
+    timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
+    StopAfterAcceptedSteps stop_again(options_.solver.accepted_steps, problem.NumResiduals());
+    if (options_.solver.accepted_steps > 0) solver_options.callbacks = {&stop_again};
+    ceres::Solve(solver_options, &problem, &summary);
+  }
   eliminated.CopyBack();
   timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
   if (!summary.IsSolutionUsable()) {

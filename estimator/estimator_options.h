@@ -7,6 +7,7 @@
 #include "core/config.h"
 #include "estimator/imu_noise_model.h"
 #include "estimator/init/vins_init_options.h"
+#include "estimator/mitigation_options.h"
 
 namespace vigil::estimator {
 
@@ -206,6 +207,7 @@ struct EstimatorOptions {
   SolverOptions solver;
   FailureOptions failure;
   ImuNoiseModelOptions imu_noise;
+  MitigationOptions mitigation;
 
   template <class V>
   void Visit(V& v) {
@@ -223,6 +225,7 @@ struct EstimatorOptions {
               "failure detection (groundtruth init: the run fails; vins: reset and re-init)");
     v.Section("imu_noise", imu_noise,
               "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
+    v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
   }
 };
 

@@ -17,7 +17,10 @@ bool ImuFactor::Evaluate(double const* const* parameters, double* residuals, dou
   const Eigen::Map<const Vector3d> v_j(parameters[3]), ba_j(parameters[3] + 3), bg_j(parameters[3] + 6);
 
   const double T = pre_.sum_dt_s();
-  const Matrix15d& sqrt_information = pre_.sqrt_information();
+  // The whitening, with a gated factor's inflation folded in (an unscaled factor uses the cached matrix).
+  Matrix15d scaled_sqrt_information;
+  if (weight_ != 1.0) scaled_sqrt_information = weight_ * pre_.sqrt_information();
+  const Matrix15d& sqrt_information = weight_ != 1.0 ? scaled_sqrt_information : pre_.sqrt_information();
   const Matrix3d Ri_T = q_i.toRotationMatrix().transpose();
   const Vector3d dp_W = p_j - p_i - v_i * T - 0.5 * g_W_ * T * T;
   const Vector3d dv_W = v_j - v_i - g_W_ * T;

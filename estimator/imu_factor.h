@@ -5,8 +5,11 @@
 //   r_ba = b_a,j - b_a,i,  r_bg = b_g,j - b_g,i
 // (deltas bias-corrected to first order), whitened by the square root of the inverse preintegration
 // covariance. Parameter blocks: pose_i (7), speed_bias_i (9), pose_j (7), speed_bias_j (9); analytic
-// Jacobians in the tangent convention of pose_manifold.h.
+// Jacobians in the tangent convention of pose_manifold.h. A gated factor (imu_gating.h) has its covariance
+// inflated by a factor k: residual and Jacobians are then multiplied by 1 / sqrt(k).
 #pragma once
+
+#include <cmath>
 
 #include <ceres/sized_cost_function.h>
 #include <Eigen/Core>
@@ -23,9 +26,14 @@ class ImuFactor : public ceres::SizedCostFunction<15, kPoseSize, kSpeedBiasSize,
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
+  // Multiplies the factor's covariance by `factor` (>= 1; 1 restores it).
+  void InflateCovariance(double factor) { weight_ = 1.0 / std::sqrt(factor); }
+  double covariance_inflation() const { return 1.0 / (weight_ * weight_); }
+
  private:
   const Preintegration& pre_;
   Eigen::Vector3d g_W_;
+  double weight_ = 1.0;  // 1 / sqrt(covariance inflation)
 };
 
 }  // namespace vigil::estimator

@@ -10,6 +10,14 @@ ImuStream::const_iterator FirstNotBefore(const ImuStream& imu, int64_t t_ns) {
                           [](const ImuSample& s, int64_t t) { return s.t_ns < t; });
 }
 
+// The variance scale of the measurement at t_ns (see PreintegrateInterval).
+double VarianceScaleAt(const ImuStream& imu, const std::vector<double>& scale, int64_t t_ns) {
+  const auto hi = FirstNotBefore(imu, t_ns);
+  const std::size_t k = static_cast<std::size_t>(hi - imu.begin());
+  if (hi->t_ns == t_ns || hi == imu.begin()) return scale[k];
+  return std::max(scale[k - 1], scale[k]);
+}
+
 }  // namespace
 
 bool ImuCovers(const ImuStream& imu, int64_t t_ns) {
@@ -35,18 +43,23 @@ ImuSample InterpolateImu(const ImuStream& imu, int64_t t_ns) {
 
 Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns,
                                     const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
-                                    const ImuNoiseDensities& noise, double imu_rate_hz) {
+                                    const ImuNoiseDensities& noise, double imu_rate_hz,
+                                    const std::vector<double>* variance_scale) {
   const ImuSample first = InterpolateImu(imu, t0_ns);
-  Preintegration pre(first.a_B, first.w_B, b_a, b_g, noise, imu_rate_hz);
+  const bool scaled = variance_scale != nullptr && !variance_scale->empty();
+  Preintegration pre(first.a_B, first.w_B, b_a, b_g, noise, imu_rate_hz,
+                     scaled ? VarianceScaleAt(imu, *variance_scale, t0_ns) : 1.0);
   int64_t t_last = t0_ns;
   for (auto it = std::upper_bound(imu.begin(), imu.end(), t0_ns,
                                   [](int64_t t, const ImuSample&s) { return t < s.t_ns; });
        it != imu.end() && it->t_ns < t1_ns; ++it) {
-    pre.Push(NsToS(it->t_ns - t_last), it->a_B, it->w_B);
+    pre.Push(NsToS(it->t_ns - t_last), it->a_B, it->w_B,
+             scaled ? (*variance_scale)[static_cast<std::size_t>(it - imu.begin())] : 1.0);
     t_last = it->t_ns;
   }
   const ImuSample last = InterpolateImu(imu, t1_ns);
-  pre.Push(NsToS(t1_ns - t_last), last.a_B, last.w_B);
+  pre.Push(NsToS(t1_ns - t_last), last.a_B, last.w_B,
+           scaled ? VarianceScaleAt(imu, *variance_scale, t1_ns) : 1.0);
   return pre;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/types.h"
 #include "estimator/preintegration.h"
@@ -14,8 +15,11 @@ bool ImuCovers(const ImuStream& imu, int64_t t_ns);
 // The measurement at t_ns, linearly interpolated between its neighbours; `imu` must cover t_ns.
 ImuSample InterpolateImu(const ImuStream& imu, int64_t t_ns);
 // Preintegrates [t0_ns, t1_ns] (t0 < t1, both covered) from the bias linearization point (b_a, b_g).
+// `variance_scale` (null, or one per sample of `imu`): each sample's white-noise variance scale; a sample
+// interpolated at an end takes the larger scale of its two neighbours.
 Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns,
                                     const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
-                                    const ImuNoiseDensities& noise, double imu_rate_hz);
+                                    const ImuNoiseDensities& noise, double imu_rate_hz,
+                                    const std::vector<double>* variance_scale = nullptr);
 
 }  // namespace vigil::estimator

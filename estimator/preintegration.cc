@@ -10,8 +10,15 @@ namespace vigil::estimator {
 
 Preintegration::Preintegration(const Eigen::Vector3d& a0_B, const Eigen::Vector3d& w0_B,
                                const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
-                               const ImuNoiseDensities& noise, double imu_rate_hz)
-    : a0_B_(a0_B), w0_B_(w0_B), b_a_(b_a), b_g_(b_g), noise_(noise), imu_rate_hz_(imu_rate_hz) {
+                               const ImuNoiseDensities& noise, double imu_rate_hz,
+                               double first_variance_scale)
+    : a0_B_(a0_B),
+      w0_B_(w0_B),
+      b_a_(b_a),
+      b_g_(b_g),
+      noise_(noise),
+      imu_rate_hz_(imu_rate_hz),
+      first_variance_scale_(first_variance_scale) {
   // Per-sample white-noise variances sigma_d^2 = sigma_c^2 * rate, doubled: each sample is shared by two
   // midpoint steps, and steps are propagated as independent, so each half-weighted sample of a step carries
   // twice the variance; the sum over many steps then has the spread of the real, shared samples.
@@ -24,6 +31,7 @@ Preintegration::Preintegration(const Eigen::Vector3d& a0_B, const Eigen::Vector3
 void Preintegration::Reset() {
   last_a_B_ = a0_B_;
   last_w_B_ = w0_B_;
+  last_variance_scale_ = first_variance_scale_;
   sum_dt_s_ = 0.0;
   delta_p_.setZero();
   delta_v_.setZero();
@@ -33,19 +41,21 @@ void Preintegration::Reset() {
   sqrt_information_.reset();
 }
 
-void Preintegration::Push(double dt_s, const Eigen::Vector3d& a_B, const Eigen::Vector3d& w_B) {
-  steps_.push_back({dt_s, a_B, w_B});
-  Integrate(dt_s, a_B, w_B);
+void Preintegration::Push(double dt_s, const Eigen::Vector3d& a_B, const Eigen::Vector3d& w_B,
+                          double variance_scale) {
+  steps_.push_back({dt_s, a_B, w_B, variance_scale});
+  Integrate(dt_s, a_B, w_B, variance_scale);
 }
 
 void Preintegration::Repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) {
   b_a_ = b_a;
   b_g_ = b_g;
   Reset();
-  for (const Step& s : steps_) Integrate(s.dt_s, s.a_B, s.w_B);
+  for (const Step& s : steps_) Integrate(s.dt_s, s.a_B, s.w_B, s.variance_scale);
 }
 
-void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eigen::Vector3d& w1_B) {
+void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eigen::Vector3d& w1_B,
+                               double variance_scale1) {
   using Eigen::Matrix3d;
   using Eigen::Vector3d;
   const Vector3d w_mid = 0.5 * (last_w_B_ + w1_B) - b_g_;
@@ -107,7 +117,14 @@ void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eig
   M.topRows<9>() += N9r * covariance_.bottomRows<12>();
   covariance_ = M;
   covariance_.leftCols<9>() += M.rightCols<12>() * N9r.transpose();
-  covariance_.topLeftCorner<9, 9>() += G9 * noise_var_.asDiagonal() * G9.transpose();
+  if (last_variance_scale_ == 1.0 && variance_scale1 == 1.0) {
+    covariance_.topLeftCorner<9, 9>() += G9 * noise_var_.asDiagonal() * G9.transpose();
+  } else {  // untrusted samples (mitigation): [a0, w0] and [a1, w1] variances scaled per sample
+    Eigen::Matrix<double, 12, 1> var = noise_var_;
+    var.head<6>() *= last_variance_scale_;
+    var.tail<6>() *= variance_scale1;
+    covariance_.topLeftCorner<9, 9>() += G9 * var.asDiagonal() * G9.transpose();
+  }
   covariance_.block<3, 3>(kBa, kBa).diagonal().array() +=
       noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt;
   covariance_.block<3, 3>(kBg, kBg).diagonal().array() +=
@@ -118,6 +135,7 @@ void Preintegration::Integrate(double dt, const Eigen::Vector3d& a1_B, const Eig
   delta_q_ = q1;
   last_a_B_ = a1_B;
   last_w_B_ = w1_B;
+  last_variance_scale_ = variance_scale1;
   sum_dt_s_ += dt;
   sqrt_information_.reset();
 }

@@ -19,6 +19,11 @@
 // with the measurement variances doubled (2 sigma_d^2): every sample is shared by two consecutive midpoint
 // steps, which are propagated as independent, so the half-weighted samples of one step must carry twice the
 // variance for the accumulated covariance to match the spread of real noise (checked by a Monte Carlo test).
+//
+// In-estimator mitigation (mitigation_options.h): each sample may carry a variance scale (1 = trusted); the
+// white-noise variances of a sample in the step's noise vector are multiplied by it, so an untrusted sample
+// widens the covariance of every delta it enters. The scales are part of the steps and survive Repropagate()
+// and merging.
 #pragma once
 
 #include <optional>
@@ -47,15 +52,18 @@ class Preintegration {
     double dt_s = 0.0;
     Eigen::Vector3d a_B = Eigen::Vector3d::Zero();
     Eigen::Vector3d w_B = Eigen::Vector3d::Zero();
+    double variance_scale = 1.0;  // of the sample at the end of the step
   };
 
   // a0_B / w0_B: the IMU sample at frame i (or interpolated to its time); b_a / b_g: the bias linearization
-  // point.
+  // point; first_variance_scale: the first sample's variance scale.
   Preintegration(const Eigen::Vector3d& a0_B, const Eigen::Vector3d& w0_B, const Eigen::Vector3d& b_a,
-                 const Eigen::Vector3d& b_g, const ImuNoiseDensities& noise, double imu_rate_hz);
+                 const Eigen::Vector3d& b_g, const ImuNoiseDensities& noise, double imu_rate_hz,
+                 double first_variance_scale = 1.0);
 
-  // Integrates from the last sample to (a_B, w_B), dt_s later, with the midpoint rule.
-  void Push(double dt_s, const Eigen::Vector3d& a_B, const Eigen::Vector3d& w_B);
+  // Integrates from the last sample to (a_B, w_B), dt_s later, with the midpoint rule; `variance_scale`
+  // multiplies the new sample's white-noise variances.
+  void Push(double dt_s, const Eigen::Vector3d& a_B, const Eigen::Vector3d& w_B, double variance_scale = 1.0);
   // Re-integrates every pushed step with a new bias linearization point.
   void Repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g);
 
@@ -87,19 +95,22 @@ class Preintegration {
 
  private:
   void Reset();
-  void Integrate(double dt_s, const Eigen::Vector3d& a1_B, const Eigen::Vector3d& w1_B);
+  void Integrate(double dt_s, const Eigen::Vector3d& a1_B, const Eigen::Vector3d& w1_B,
+                 double variance_scale1);
 
   // Inputs.
   Eigen::Vector3d a0_B_, w0_B_;
   Eigen::Vector3d b_a_, b_g_;
   ImuNoiseDensities noise_;
   double imu_rate_hz_;
+  double first_variance_scale_;
   std::vector<Step> steps_;
   Eigen::Matrix<double, 12, 1>
       noise_var_;  // per-sample variances of [a0, w0, a1, w1] (the bias walks scale with dt)
 
   // Integration state.
   Eigen::Vector3d last_a_B_, last_w_B_;
+  double last_variance_scale_ = 1.0;
   double sum_dt_s_ = 0.0;
   Eigen::Vector3d delta_p_, delta_v_;
   Eigen::Quaterniond delta_q_;

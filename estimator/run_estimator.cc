@@ -9,16 +9,41 @@
 #include "core/format.h"
 #include "estimator/estimator.h"
 #include "estimator/imu_interval.h"
+#include "estimator/imu_trust.h"
 #include "estimator/make_initializer.h"
 
 namespace vigil::estimator {
 namespace {
 
-void CheckInput(const EstimatorInput& input) {
-  if (input.imu.size() < 2) throw InputError("estimator: the IMU stream needs at least two samples");
-  for (std::size_t k = 1; k < input.imu.size(); ++k)
-    if (input.imu[k].t_ns <= input.imu[k - 1].t_ns)
-      throw InputError("estimator: IMU timestamps not strictly increasing at sample " + std::to_string(k));
+// The IMU samples the estimator integrates: a sample whose timestamp equals the previous one's (a duplicated
+// timestamp of a consumer IMU) is dropped, keeping the first, together with its flag. Timestamps going
+// backwards are an input error.
+struct IntegratedImu {
+  ImuStream imu;
+  std::vector<uint8_t> flagged;
+  int repeated = 0;
+};
+
+IntegratedImu DropRepeatedTimestamps(const EstimatorInput& input) {
+  if (!input.imu_flagged.empty() && input.imu_flagged.size() != input.imu.size())
+    throw InputError("estimator: imu_flagged must be empty or hold one flag per IMU sample");
+  IntegratedImu out;
+  for (std::size_t k = 1; k < input.imu.size(); ++k) {
+    if (input.imu[k].t_ns < input.imu[k - 1].t_ns)
+      throw InputError("estimator: IMU timestamps decrease at sample " + std::to_string(k));
+    out.repeated += input.imu[k].t_ns == input.imu[k - 1].t_ns;
+  }
+  if (out.repeated == 0) return out;  // the input is used as it is
+  for (std::size_t k = 0; k < input.imu.size(); ++k) {
+    if (k > 0 && input.imu[k].t_ns == input.imu[k - 1].t_ns) continue;
+    out.imu.push_back(input.imu[k]);
+    if (!input.imu_flagged.empty()) out.flagged.push_back(input.imu_flagged[k]);
+  }
+  return out;
+}
+
+void CheckInput(const ImuStream& imu, const EstimatorInput& input) {
+  if (imu.size() < 2) throw InputError("estimator: the IMU stream needs at least two samples");
   for (std::size_t k = 1; k < input.frames.size(); ++k)
     if (input.frames[k].t_ns <= input.frames[k - 1].t_ns)
       throw InputError("estimator: camera frame timestamps not strictly increasing at frame " +
@@ -30,20 +55,27 @@ void CheckInput(const EstimatorInput& input) {
 }  // namespace
 
 EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInput& input) {
-  CheckInput(input);
-  const double imu_rate_hz =
-      static_cast<double>(input.imu.size() - 1) / NsToS(input.imu.back().t_ns - input.imu.front().t_ns);
+  const IntegratedImu deduplicated = DropRepeatedTimestamps(input);
+  const bool repeated = deduplicated.repeated > 0;
+  const ImuStream& imu = repeated ? deduplicated.imu : input.imu;
+  CheckInput(imu, input);
+  const ImuTrust trust =
+      ComputeImuTrust(options.mitigation, imu, repeated ? deduplicated.flagged : input.imu_flagged);
+  const double imu_rate_hz = static_cast<double>(imu.size() - 1) / NsToS(imu.back().t_ns - imu.front().t_ns);
   Estimator estimator(options, input.camera, ResolveImuNoise(options.imu_noise, input.imu_noise, imu_rate_hz),
                       input.gravity_mps2, imu_rate_hz, MakeInitializer(options, input));
   EstimatorResult result;
+  result.mitigation.repeated_timestamps = deduplicated.repeated;
+  result.mitigation.inflated_samples = trust.inflated_samples;
+  result.mitigation.clipped_samples = trust.clipped_samples;
   try {
     for (const CameraFrame& frame : input.frames) {
-      if (!ImuCovers(input.imu, frame.t_ns)) continue;
+      if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
       std::map<int, Eigen::Vector2d> features_n;
       for (const FeatureObservation& obs : frame.features)
         features_n[obs.id] = input.camera.Normalize(obs.uv_px);
-      const FrameStatus status = estimator.AddFrame(frame.t_ns, features_n, input.imu);
+      const FrameStatus status = estimator.AddFrame(frame.t_ns, features_n, imu, &trust.variance_scale);
       if (status == FrameStatus::kFailed) {
         result.ok = false;
         result.failure_reason = estimator.failure_reason();
@@ -68,6 +100,9 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   result.keyframes = estimator.keyframes();
   result.marginalization_failures = estimator.marginalization_failures();
   result.timing = estimator.timing();
+  result.mitigation.gate_tests = estimator.gating().tests;
+  result.mitigation.gated_factors = estimator.gating().gated;
+  result.mitigation.gated_resolves = estimator.gating().resolves;
   return result;
 }
 

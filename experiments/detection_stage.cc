@@ -63,9 +63,10 @@ DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
                          config.detector.threshold.calibration == detectors::ThresholdCalibration::kClean;
   const detectors::DetectorOptions options = ResolveDetectorOptions(config);
   stage.result = detectors::DetectAndMitigate(options, dataset.imu, templates);
-  stage.metrics = detectors::EvaluateDetection(dataset.imu, stage.result,
-                                               with_glitches ? dataset.glitches : std::vector<GlitchRecord>{},
-                                               with_clean ? dataset.imu_clean : ImuStream{});
+  stage.metrics = detectors::EvaluateDetection(
+      dataset.imu, stage.result,
+      with_glitches ? OffsetGlitches(dataset.glitches) : std::vector<GlitchRecord>{},
+      with_clean ? dataset.imu_clean : ImuStream{});
   stage.json = detectors::DetectionJson(stage.metrics, with_glitches, with_clean);
   stage.json["detector"] = config::EnumNameOf(config.detector.type, detectors::DetectorTypeNames());
   if (options.type == detectors::DetectorType::kThreshold) {

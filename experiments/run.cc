@@ -53,9 +53,11 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
   return data;
 }
 
-estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu) {
+estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu,
+                                    std::vector<uint8_t> flagged) {
   try {
-    return estimator::RunEstimator(config.estimator, MakeEstimatorInput(config, dataset, std::move(imu)));
+    return estimator::RunEstimator(config.estimator,
+                                   MakeEstimatorInput(config, dataset, std::move(imu), std::move(flagged)));
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -103,7 +105,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
 
   t = Clock::now();
   const estimator::EstimatorResult result =
-      Estimate(config, data.dataset, std::move(detection.result.cleaned));
+      Estimate(config, data.dataset, std::move(detection.result.cleaned), detection.result.flagged);
   summary.wall.estimate_s = SecondsSince(t);
 
   t = Clock::now();

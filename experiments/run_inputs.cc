@@ -6,7 +6,8 @@
 
 namespace vigil::experiments {
 
-estimator::EstimatorInput MakeEstimatorInput(const RunConfig& config, const Dataset& dataset, ImuStream imu) {
+estimator::EstimatorInput MakeEstimatorInput(const RunConfig& config, const Dataset& dataset, ImuStream imu,
+                                             std::vector<uint8_t> flagged) {
   estimator::EstimatorInput input;
   input.imu = std::move(imu);
   input.frames = dataset.frames;
@@ -19,6 +20,7 @@ estimator::EstimatorInput MakeEstimatorInput(const RunConfig& config, const Data
   input.gravity_mps2 = config.sim.gravity_mps2;
   input.groundtruth = dataset.groundtruth;
   input.seed = config.seed;
+  input.imu_flagged = std::move(flagged);
   return input;
 }
 

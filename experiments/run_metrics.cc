@@ -39,6 +39,13 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                       {"optimize_ms_per_frame", PerFrameMs(t.optimize_s, result.frames)},
                       {"marginalize_ms_per_frame", PerFrameMs(t.marginalize_s, result.frames)},
                       {"estimate_ms_per_frame", PerFrameMs(w.estimate_s, result.frames)}}}};
+  const estimator::MitigationStats& mit = result.mitigation;
+  m["estimator"]["mitigation"] = {{"repeated_timestamps", mit.repeated_timestamps},
+                                  {"inflated_samples", mit.inflated_samples},
+                                  {"clipped_samples", mit.clipped_samples},
+                                  {"gate_tests", mit.gate_tests},
+                                  {"gated_factors", mit.gated_factors},
+                                  {"gated_resolves", mit.gated_resolves}};
   m.update(EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
   m["detection"] = detection;
   return m;

@@ -151,6 +151,9 @@ std::vector<SweepSetting> ParseMethods(const std::string& path, const YAML::Node
       m.overrides.push_back({"detector.type", it->second, LineOf(it->second)});
     } else {
       CollectOverrides(path, it->second, "detector", where, &m.overrides);
+      // Keys under `estimator.` set the estimator (in-estimator mitigation per method).
+      for (SweepOverride& o : m.overrides)
+        if (o.key.rfind("detector.estimator.", 0) == 0) o.key = o.key.substr(std::string("detector.").size());
     }
     methods.push_back(std::move(m));
   }

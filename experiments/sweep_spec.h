@@ -12,6 +12,8 @@
 //   methods:                         # name -> detector settings (keys relative to `detector`); a scalar is
 //     trunc: threshold               #   shorthand for {type: <scalar>}
 //     dtw: {type: dtw}
+//     trunc_gate: {type: threshold, estimator.mitigation.gating.enabled: true}  # keys under `estimator.`
+//                                    #   set the estimator: in-estimator mitigation per method
 //   seeds: {count: 10, first: 1}     # or an explicit list [1, 2, 5]
 //   template_seed: 1000              # DTW templates: glitch-free simulation with this seed (not a run seed)
 //   write_trajectories: true         # keep stamped_*.txt / detections.csv in every run directory

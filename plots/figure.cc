@@ -13,12 +13,18 @@ Figure::Figure(int rows, int cols, std::string title) : rows_(rows), cols_(cols)
 
 template <class P>
 P& Figure::Add(int row, int col, int row_span, int col_span) {
+  auto panel = std::make_unique<P>();
+  P& ref = *panel;
+  AddPanel(std::move(panel), row, col, row_span, col_span);
+  return ref;
+}
+
+Panel& Figure::AddPanel(std::unique_ptr<Panel> panel, int row, int col, int row_span, int col_span) {
   if (row < 0 || col < 0 || row_span < 1 || col_span < 1 || row + row_span > rows_ ||
       col + col_span > cols_) {
     throw std::invalid_argument("Figure: panel outside the grid");
   }
-  auto panel = std::make_unique<P>();
-  P& ref = *panel;
+  Panel& ref = *panel;
   panels_.push_back({std::move(panel), row, col, row_span, col_span});
   return ref;
 }

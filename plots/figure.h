@@ -21,6 +21,8 @@ class Figure {
   // Adds a panel at (row, col) spanning row_span x col_span cells.
   Axes& AddAxes(int row, int col, int row_span = 1, int col_span = 1);
   Axes3D& AddAxes3D(int row, int col, int row_span = 1, int col_span = 1);
+  // Adds a panel of another kind (e.g. heatmap_panel.h) at (row, col); returns it.
+  Panel& AddPanel(std::unique_ptr<Panel> panel, int row, int col, int row_span = 1, int col_span = 1);
 
   // Draws every panel into a width x height image.
   Image Render(GlContext* gl, TextRenderer* text, int width, int height);

@@ -29,6 +29,8 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
       if (options.glitch.axes[i] == options.glitch.axes[j])
         throw InputError(origin + ": glitch.axes: axis " + ImuAxisName(options.glitch.axes[i]) +
                          " listed twice");
+  const std::string faults = ValidateFaultOptions(options.faults, options.gravity_mps2);
+  if (!faults.empty()) throw InputError(origin + ": faults." + faults);
   if (options.landmarks.layout != LandmarkLayout::kHouse && options.landmarks.random_count <= 0)
     throw InputError(origin +
                      ": landmarks.random_count: must be > 0 for the layouts random and house+random");

@@ -9,6 +9,7 @@
 #include "core/camera.h"
 #include "core/config.h"
 #include "core/types.h"
+#include "sim/fault_options.h"
 
 namespace vigil::sim {
 
@@ -135,6 +136,7 @@ struct SimOptions {
   ImuOptions imu;
   CameraModel camera;
   GlitchOptions glitch;
+  FaultOptions faults;
 
   template <class V>
   void Visit(V& v) {
@@ -146,6 +148,8 @@ struct SimOptions {
     v.Section("imu", imu, "IMU sampling and noise");
     v.Section("camera", camera, "pinhole camera and feature tracks");
     v.Section("glitch", glitch, "injected IMU glitches");
+    v.Section("faults", faults,
+              "low-cost IMU faults besides the glitches (sim/imu_faults.h gives their order)");
   }
 };
 

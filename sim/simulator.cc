@@ -8,8 +8,10 @@
 #include "core/output.h"
 #include "sim/camera_simulator.h"
 #include "sim/glitch_injector.h"
+#include "sim/imu_faults.h"
 #include "sim/imu_synthesizer.h"
 #include "sim/landmarks.h"
+#include "sim/scale_misalignment.h"
 #include "sim/trajectory_model.h"
 
 namespace vigil::sim {
@@ -37,7 +39,11 @@ std::unique_ptr<TrajectoryModel> CheckedMotion(const SimOptions& options) {
 
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
-  return SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
+  ImuSynthesis out = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
+  ApplyScaleMisalignment(options.faults.scale, &out.imu);
+  ImuStream measured = out.imu;  // the faults of imu_clean are applied alongside those of the measured stream
+  ApplyMeasurementFaults(options, seed, &measured, &out.imu, nullptr);
+  return out;
 }
 
 Dataset Simulate(const SimOptions& options, uint64_t seed) {
@@ -46,8 +52,10 @@ Dataset Simulate(const SimOptions& options, uint64_t seed) {
   ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
   d.imu_clean = std::move(imu.imu);
   d.groundtruth = std::move(imu.groundtruth);
+  ApplyScaleMisalignment(options.faults.scale, &d.imu_clean);
   d.imu = d.imu_clean;
   d.glitches = InjectGlitches(options.glitch, seed, &d.imu);
+  ApplyMeasurementFaults(options, seed, &d.imu, &d.imu_clean, &d.glitches);
   d.landmarks = MakeLandmarks(options.landmarks, SamplePath(*motion, options.duration_s), seed);
   d.camera = options.camera;
   d.frames = SimulateFeatureTracks(*motion, options.camera, d.landmarks, d.imu.front().t_ns,

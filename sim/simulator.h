@@ -1,9 +1,10 @@
 // The simulator: a whole dataset (formats.md) from SimOptions and a seed.
 //
 // Simulate() chains the stages: motion model -> IMU + ground truth (imu_synthesizer) -> glitches
-// (glitch_injector) -> landmarks -> feature tracks (camera_simulator). Each random stream derives from
-// (seed, purpose): "imu_noise", "imu_bias", "glitch", "glitch_offset", "landmarks", "pixels"; so the same
-// options and seed give the same dataset bit for bit, and e.g. glitch settings never change the IMU noise.
+// (glitch_injector) and the other IMU faults (imu_faults.h gives their order) -> landmarks -> feature tracks
+// (camera_simulator). Each random stream derives from (seed, purpose): "imu_noise", "imu_bias", "glitch",
+// "glitch_offset", "imu_drop", "imu_duplicate", "imu_jitter", "landmarks", "pixels"; so the same options and
+// seed give the same dataset bit for bit, and e.g. glitch or fault settings never change the IMU noise.
 #pragma once
 
 #include <cstdint>
@@ -19,9 +20,10 @@ namespace vigil::sim {
 // Simulates one recording. Throws InputError for bad options (naming the key).
 Dataset Simulate(const SimOptions& options, uint64_t seed);
 
-// Only the first stage of Simulate(): the clean IMU stream and ground truth (no glitches, landmarks or
-// camera), bit-identical to Simulate(options, seed).imu_clean / .groundtruth. For callers that need only
-// normal motion (DTW templates). Throws InputError for bad options.
+// Only the first stage of Simulate(): the clean IMU stream (the sensor's constant errors, quantization and
+// timing faults included; no glitches or clipping) and ground truth (no landmarks or camera), bit-identical
+// to Simulate(options, seed).imu_clean / .groundtruth. For callers that need only normal motion (DTW
+// templates). Throws InputError for bad options.
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed);
 
 // `vigil simulate`: simulates and writes the dataset directory `dir` (staged in a temporary sibling and

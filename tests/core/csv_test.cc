@@ -39,8 +39,12 @@ TEST(Csv, MalformedImuFilesNameFileAndLine) {
   EXPECT_EQ(InputErrorOf([&] { ReadImuCsv(missing); }), missing + ":3: expected 7 columns, found 6");
   const std::string nan = dir.File("n.csv", std::string(kHeader) + "1,0,0,0,0,0,nan\n");
   EXPECT_EQ(InputErrorOf([&] { ReadImuCsv(nan); }), nan + ":2: az: expected a finite number, got 'nan'");
-  const std::string order = dir.File("o.csv", std::string(kHeader) + "5,0,0,0,0,0,1\n5,0,0,0,0,0,1\n");
-  EXPECT_EQ(InputErrorOf([&] { ReadImuCsv(order); }), order + ":3: timestamp 5 does not increase (previous 5)");
+  const std::string order = dir.File("o.csv", std::string(kHeader) + "5,0,0,0,0,0,1\n4,0,0,0,0,0,1\n");
+  EXPECT_EQ(InputErrorOf([&] { ReadImuCsv(order); }),
+            order + ":3: timestamp 4 does not increase (previous 5)");
+  // A repeated timestamp (a consumer IMU's duplicated stamp) is read; the estimator keeps the first.
+  const std::string repeated = dir.File("r.csv", std::string(kHeader) + "5,0,0,0,0,0,1\n5,0,0,0,0,0,2\n");
+  EXPECT_EQ(ReadImuCsv(repeated).size(), 2u);
   const std::string no_header = dir.File("x.csv", "1,0,0,0,0,0,1\n");
   EXPECT_NE(InputErrorOf([&] { ReadImuCsv(no_header); }).find(no_header + ":1: expected a header"),
             std::string::npos);
@@ -50,7 +54,8 @@ TEST(Csv, MalformedImuFilesNameFileAndLine) {
 
 TEST(Csv, AcceptsEurocStyleWhitespaceAndCrlf) {
   TempDir dir;
-  const std::string path = dir.File("e.csv", std::string(kHeader) + "1403636579758555392, 0.1 ,0,0,0,0,9.8\r\n");
+  const std::string path =
+      dir.File("e.csv", std::string(kHeader) + "1403636579758555392, 0.1 ,0,0,0,0,9.8\r\n");
   const ImuStream imu = ReadImuCsv(path);
   ASSERT_EQ(imu.size(), 1u);
   EXPECT_EQ(imu[0].t_ns, 1403636579758555392);
@@ -59,7 +64,8 @@ TEST(Csv, AcceptsEurocStyleWhitespaceAndCrlf) {
 
 TEST(Csv, FeaturesGroupByFrameAndKeepEmptyFrames) {
   TempDir dir;
-  std::vector<CameraFrame> frames = {{10, {{1, {1.5, 2.5}}, {2, {3.0, 4.0}}}}, {20, {}}, {30, {{1, {5.0, 6.0}}}}};
+  std::vector<CameraFrame> frames = {
+      {10, {{1, {1.5, 2.5}}, {2, {3.0, 4.0}}}}, {20, {}}, {30, {{1, {5.0, 6.0}}}}};
   const std::string path = dir.File("f.csv", FeaturesCsv(frames));
   const auto back = ReadFeaturesCsv(path, {10, 20, 30, 40});
   ASSERT_EQ(back.size(), 4u);
@@ -78,7 +84,8 @@ TEST(Csv, TumTrajectoryRoundTrips) {
   t[1].t_ns = 2'000'000'000;
   t[1].q_WB = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
   const std::string text = TumTrajectory(t);
-  EXPECT_EQ(text.substr(0, text.find('\n', 40)), "# timestamp tx ty tz qx qy qz qw\n1.500000001 1 2 3 0 0 0 1");
+  EXPECT_EQ(text.substr(0, text.find('\n', 40)),
+            "# timestamp tx ty tz qx qy qz qw\n1.500000001 1 2 3 0 0 0 1");
   const Trajectory back = ReadTumTrajectory(dir.File("t.txt", text));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[0].t_ns, t[0].t_ns);

@@ -99,6 +99,38 @@ TEST(FactorJacobianTest, ImuFactor) {
   WorstJacobianError(factor, {pose_i, sb_i, pose_j, sb_j});
 }
 
+// In-estimator mitigation: a preintegration with inflated samples (detector flags, clipping) and a gated
+// factor (inflated covariance) keep analytic Jacobians that match central differences, and the gate scales
+// the whitened residual by 1 / sqrt(inflation).
+TEST(FactorJacobianTest, ImuFactorWithInflatedSamplesAndGating) {
+  Rng rng(12, "imu_factor_test");
+  Preintegration pre(Eigen::Vector3d(0.2, -0.1, 9.7), Eigen::Vector3d(0.3, 0.1, -0.2),
+                     Eigen::Vector3d(0.05, 0, 0), Eigen::Vector3d(0, 0.01, 0), ImuNoiseDensities{}, 200.0,
+                     1e4);
+  Eigen::Vector3d a(0.2, -0.1, 9.7), w(0.3, 0.1, -0.2);
+  for (int k = 0; k < 20; ++k) {
+    a += RandomVector(rng, 0.3);
+    w += RandomVector(rng, 0.05);
+    pre.Push(0.005, a + (k == 7 ? Eigen::Vector3d(0, 0, 50) : Eigen::Vector3d::Zero()), w,
+             k == 7 || k == 8 ? 1e4 : 1.0);
+  }
+  ImuFactor factor(pre, Eigen::Vector3d(0, 0, -9.81));
+  const std::vector<double> pose_i = Pose(Eigen::Vector3d(1, 2, 3), ExpQ(Eigen::Vector3d(0.1, -0.2, 0.3)));
+  const std::vector<double> pose_j =
+      Pose(Eigen::Vector3d(1.2, 2.1, 2.9), ExpQ(Eigen::Vector3d(0.15, -0.1, 0.4)));
+  const std::vector<double> sb_i = {0.5, 0.2, -0.1, 0.07, -0.02, 0.03, 0.004, 0.012, -0.003};
+  const std::vector<double> sb_j = {0.6, 0.1, -0.2, 0.06, -0.01, 0.02, 0.005, 0.011, -0.002};
+  WorstJacobianError(factor, {pose_i, sb_i, pose_j, sb_j});
+  Eigen::Matrix<double, 15, 1> r_nominal, r_gated;
+  const double* p[4] = {pose_i.data(), sb_i.data(), pose_j.data(), sb_j.data()};
+  ASSERT_TRUE(factor.Evaluate(p, r_nominal.data(), nullptr));
+  factor.InflateCovariance(9.0);
+  EXPECT_DOUBLE_EQ(factor.covariance_inflation(), 9.0);
+  WorstJacobianError(factor, {pose_i, sb_i, pose_j, sb_j});
+  ASSERT_TRUE(factor.Evaluate(p, r_gated.data(), nullptr));
+  EXPECT_LT((r_gated - r_nominal / 3.0).norm(), 1e-12 * r_nominal.norm());
+}
+
 TEST(FactorJacobianTest, BiasPriorFactor) {
   const BiasPriorFactor factor(Eigen::Vector3d(0.02, -0.05, 0.1), Eigen::Vector3d(0.001, 0.002, -0.003), 0.1,
                                0.01);
