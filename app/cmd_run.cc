@@ -26,7 +26,8 @@ void AddRunCommand(CLI::App& root) {
       ->required();
   cmd->add_option("--dataset", args->dataset,
                   "read this dataset directory (vigil simulate) instead of simulating");
-  cmd->add_flag("--force", args->force, "replace a non-empty output directory");
+  cmd->add_flag("--force", args->force,
+                "replace an output directory vigil wrote (files it did not write are kept)");
   cmd->add_flag("--no-trajectories", args->no_trajectories,
                 "write only config.yaml and metrics.json (no stamped_*.txt, no detections.csv)");
   SetAction(cmd, [args] {

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "core/output.h"
 #include "experiments/progress.h"
 #include "experiments/run.h"
 #include "experiments/sweep_runner.h"
@@ -23,6 +24,18 @@ void SweepArgs::AddTo(CLI::App* cmd) {
 }
 
 int SweepArgs::Run(const experiments::SweepSpec& spec, const char* command) const {
+  // The sweep file (unless it is the directory's own sweep.yaml, the record of this very sweep), its base
+  // configuration and every file a cell's configuration reads.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::vector<fs::path> inputs{spec.base};
+  if (fs::weakly_canonical(fs::absolute(spec.path), ec) !=
+      fs::weakly_canonical(fs::absolute(output) / "sweep.yaml", ec))
+    inputs.emplace_back(spec.path);
+  for (const experiments::SweepCell& cell : experiments::EnumerateCells(spec))
+    for (const auto& file : experiments::RunConfigInputs(experiments::ResolveCellConfig(spec, cell)))
+      inputs.emplace_back(file);
+  RefuseOutputOverInputs(output, inputs);
   experiments::SweepRunOptions options;
   options.threads = threads;
   options.resume = resume;
