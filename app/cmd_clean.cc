@@ -103,8 +103,11 @@ void AddCleanCommand(CLI::App& root) {
     }
     json.update(detectors::DetectionJson(metrics, has_glitches, has_clean));
 
-    std::vector<fs::path> inputs{input.imu, clean_path, glitches_path, options.dtw.templates_file};
+    // The dataset directory first (the clearest message), then every file read.
+    std::vector<fs::path> inputs;
     if (fs::is_directory(args->dataset, ec)) inputs.emplace_back(args->dataset);
+    for (const fs::path& file : {input.imu, clean_path, glitches_path, fs::path(options.dtw.templates_file)})
+      inputs.push_back(file);
     RefuseOutputOverInputs(args->output, inputs);
     StagedDirectory out(args->output, args->force);
     WriteFileAtomic(out.path() / dataset_files::kImu, ImuCsv(result.cleaned));

@@ -20,8 +20,14 @@ std::vector<fs::path> PlotInputs(const std::string& kind, const fs::path& dir, c
   std::vector<fs::path> inputs;
   std::error_code ec;
   const fs::path out_resolved = fs::weakly_canonical(fs::absolute(out), ec);
-  for (const fs::directory_entry& e : fs::directory_iterator(dir))
-    if (!e.is_directory(ec) || fs::weakly_canonical(e.path(), ec) != out_resolved) inputs.push_back(e.path());
+  const fs::path relative = out_resolved.lexically_relative(fs::weakly_canonical(fs::absolute(dir), ec));
+  if (relative.empty() || relative == "." || *relative.begin() == "..") {
+    inputs.push_back(dir);  // the output is not inside `dir`
+  } else {
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))
+      if (!e.is_directory(ec) || fs::weakly_canonical(e.path(), ec) != out_resolved)
+        inputs.push_back(e.path());
+  }
   if (kind == "run")
     if (const auto dataset = plots::RecordedDatasetOf(plots::LoadRunDirectory(dir)))
       inputs.push_back(*dataset);

@@ -24,7 +24,7 @@ struct ConfigArgs {
 
   // Adds CONFIG (positional, required unless `optional`), --set and --seed to `cmd`.
   void AddTo(CLI::App* cmd, bool optional = false);
-  // The overrides with --seed appended as "seed=N"; InputError unless --seed is an integer 0 .. 2^64 - 1.
+  // The overrides with --seed appended as "seed=N"; InputError unless --seed is an integer 0 .. 2^63 - 1.
   std::vector<std::string> AllOverrides() const;
 };
 

@@ -22,17 +22,18 @@ void ConfigArgs::AddTo(CLI::App* cmd, bool optional) {
   auto* opt = cmd->add_option("CONFIG", config_path, "run configuration (YAML; see configs/README.md)");
   if (!optional) opt->required();
   cmd->add_option("--set", overrides, "override a config key: key.path=value (repeatable)")->take_all();
-  cmd->add_option("--seed", seed, "run seed 0 .. 2^64 - 1 (overrides the config's `seed`)");
+  cmd->add_option("--seed", seed, "run seed 0 .. 2^63 - 1 (overrides the config's `seed`)");
 }
 
 std::vector<std::string> ConfigArgs::AllOverrides() const {
   std::vector<std::string> all = overrides;
   if (!seed.empty()) {
-    uint64_t value = 0;
+    // The range of a config's `seed` (an integer key); beyond it CLI11 would clamp silently.
+    int64_t value = -1;
     const char* end = seed.data() + seed.size();
     const auto [ptr, ec] = std::from_chars(seed.data(), end, value);
-    if (ec != std::errc() || ptr != end)
-      throw InputError("--seed: expected an integer from 0 to 18446744073709551615 (2^64 - 1), got '" + seed +
+    if (ec != std::errc() || ptr != end || value < 0)
+      throw InputError("--seed: expected an integer from 0 to 9223372036854775807 (2^63 - 1), got '" + seed +
                        "'");
     all.push_back("seed=" + std::to_string(value));
   }

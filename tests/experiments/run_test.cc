@@ -138,7 +138,7 @@ TEST(Run, NoTrajectoriesWritesOnlyConfigAndMetrics) {
   for (const auto& e : fs::directory_iterator(tmp.path() / "run"))
     names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"config.yaml", "metrics.json"}));
+  EXPECT_EQ(names, (std::vector<std::string>{".vigil-output", "config.yaml", "metrics.json"}));
 }
 
 TEST(Run, BadInputWritesNothing) {
@@ -162,15 +162,23 @@ TEST(Run, BadInputWritesNothing) {
   EXPECT_EQ(left, (std::vector<std::string>{"bad.yaml"}));
 }
 
-TEST(Run, RefusesANonEmptyOutputUnlessForced) {
+TEST(Run, ForceReplacesOnlyARunDirectoryVigilWroteAndKeepsOtherFiles) {
   TempDir tmp;
+  const fs::path mine = tmp.path() / "mine";
+  fs::create_directories(mine);
+  tmp.File("mine/notes.txt", "mine");
+  EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kTiny, RunOptions{}, mine, false); }), "");
+  EXPECT_NE(InputErrorOf([&] {
+              RunToDirectory(kPaper, kTiny, RunOptions{}, mine, true);
+            }).find("not written by vigil"),
+            std::string::npos);
+  EXPECT_EQ(ReadFile(mine / "notes.txt"), "mine");
   const fs::path dir = tmp.path() / "run";
-  fs::create_directories(dir);
+  RunToDirectory(kPaper, kTiny, RunOptions{}, dir, false);
   tmp.File("run/notes.txt", "mine");
   EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kTiny, RunOptions{}, dir, false); }), "");
-  EXPECT_EQ(ReadFile(dir / "notes.txt"), "mine");
   RunToDirectory(kPaper, kTiny, RunOptions{}, dir, /*force=*/true);
-  EXPECT_FALSE(fs::exists(dir / "notes.txt"));
+  EXPECT_EQ(ReadFile(dir / "notes.txt"), "mine");  // not vigil's: kept
   EXPECT_TRUE(fs::exists(dir / "metrics.json"));
 }
 

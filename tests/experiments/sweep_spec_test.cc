@@ -112,10 +112,8 @@ TEST(SweepSpec, SizesAreCheckedBeforeAnythingIsAllocated) {
   const std::string f = (dir.path() / "bad.yaml").string();
   EXPECT_EQ(error("methods: {a: none}\nseeds: {count: 100000000}\n"),
             f + ":3: seeds.count: must be at most 100000");
-  EXPECT_EQ(error("methods: {a: none}\nseeds: {count: 2, first: 18446744073709551615}\n"),
-            f + ":3: seeds.first: first + count - 1 must be at most 2^64 - 1");
   EXPECT_NE(error("axes: {duration_s: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]}\nmethods: {a: none}\n"
-                  "seeds: {count: 100000}\n")
+                  "seeds: {count: 100000, first: 2000}\n")
                 .find("more than 1000000 runs"),
             std::string::npos);
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\nseeds: [2]\n"),
