@@ -54,7 +54,8 @@ void AddCleanCommand(CLI::App& root) {
   cmd->add_option("--templates", args->templates,
                   "DTW template library (from `vigil templates`); required for dtw");
   args->overrides.AddTo(cmd);
-  cmd->add_flag("--force", args->force, "replace a non-empty output directory");
+  cmd->add_flag("--force", args->force,
+                "replace an output directory vigil wrote (files it did not write are kept)");
   SetAction(cmd, [args] {
     detectors::DetectorOptions options = args->overrides.Resolve();
     const auto type = config::EnumFromName(args->detector, detectors::DetectorTypeNames());
@@ -108,6 +109,12 @@ void AddCleanCommand(CLI::App& root) {
     }
     json.update(detectors::DetectionJson(metrics, has_glitches, has_clean));
 
+    // The dataset directory first (the clearest message), then every file read.
+    std::vector<fs::path> inputs;
+    if (fs::is_directory(args->dataset, ec)) inputs.emplace_back(args->dataset);
+    for (const fs::path& file : {input.imu, clean_path, glitches_path, fs::path(options.dtw.templates_file)})
+      inputs.push_back(file);
+    RefuseOutputOverInputs(args->output, inputs);
     StagedDirectory out(args->output, args->force);
     WriteFileAtomic(out.path() / dataset_files::kImu, ImuCsv(result.cleaned));
     WriteFileAtomic(out.path() / "detections.csv", detectors::DetectionsCsv(raw, result.flagged));

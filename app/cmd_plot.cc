@@ -7,9 +7,32 @@
 #include "app/commands.h"
 #include "core/output.h"
 #include "plots/render.h"
+#include "plots/run_data.h"
 
 namespace vigil::app {
 namespace {
+namespace fs = std::filesystem;
+
+// What a figure directory `out` must not overwrite: every entry of the input directory `dir` except `out`
+// itself when it is a directory there (DIR/figures by default), and the dataset a run directory was computed
+// on.
+std::vector<fs::path> PlotInputs(const std::string& kind, const fs::path& dir, const fs::path& out) {
+  std::vector<fs::path> inputs;
+  std::error_code ec;
+  const fs::path out_resolved = fs::weakly_canonical(fs::absolute(out), ec);
+  const fs::path relative = out_resolved.lexically_relative(fs::weakly_canonical(fs::absolute(dir), ec));
+  if (relative.empty() || relative == "." || *relative.begin() == "..") {
+    inputs.push_back(dir);  // the output is not inside `dir`
+  } else {
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))
+      if (!e.is_directory(ec) || fs::weakly_canonical(e.path(), ec) != out_resolved)
+        inputs.push_back(e.path());
+  }
+  if (kind == "run")
+    if (const auto dataset = plots::RecordedDatasetOf(plots::LoadRunDirectory(dir)))
+      inputs.push_back(*dataset);
+  return inputs;
+}
 
 using Renderer = std::function<std::vector<std::filesystem::path>(
     const std::filesystem::path&, const std::filesystem::path&, const plots::FigureOptions&)>;
@@ -30,11 +53,13 @@ void AddPlotSubcommand(CLI::App* plot, const std::string& name, const std::strin
   cmd->add_option("--width", args->figure.width, "image width [px]")->check(CLI::Range(200, 8000));
   cmd->add_option("--height", args->figure.height, "image height [px]")->check(CLI::Range(200, 8000));
   cmd->add_option("--font", args->figure.font_file, "TrueType font file");
-  cmd->add_flag("--force", args->force, "replace a non-empty figure directory");
+  cmd->add_flag("--force", args->force,
+                "replace a figure directory vigil wrote (files it did not write are kept)");
   SetAction(cmd, [args, render, name] {
     plots::ValidateFigureOptions(args->figure);
     const std::filesystem::path out = args->output.empty() ? std::filesystem::path(args->dir) / "figures"
                                                            : std::filesystem::path(args->output);
+    RefuseOutputOverInputs(out, PlotInputs(name, args->dir, out));
     const auto start = std::chrono::steady_clock::now();
     StagedDirectory staged(out, args->force);
     const auto written = render(args->dir, staged.path(), args->figure);

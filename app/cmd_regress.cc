@@ -48,6 +48,7 @@ void AddRegressCommand(CLI::App& root) {
       if (report.regressions) status = 1;
     }
     if (!args->write_baseline.empty()) {
+      RefuseOutputOverInputs(args->write_baseline, {args->dir}, "--write-baseline");
       std::error_code ec;
       if (std::filesystem::exists(args->write_baseline, ec) && !args->force)
         throw InputError(args->write_baseline + ": exists (use --force to replace it)");

@@ -27,7 +27,8 @@ void AddRunCommand(CLI::App& root) {
       ->required();
   cmd->add_option("--dataset", args->dataset,
                   "read this dataset directory (vigil simulate) instead of simulating");
-  cmd->add_flag("--force", args->force, "replace a non-empty output directory");
+  cmd->add_flag("--force", args->force,
+                "replace an output directory vigil wrote (files it did not write are kept)");
   cmd->add_flag("--no-trajectories", args->no_trajectories, "no stamped_*.txt and no detections.csv");
   cmd->add_flag("--no-figure-data", args->no_figure_data,
                 "no landmarks.csv and no imu_axis.csv (what the run's figures 1, 2 and 5 draw)");

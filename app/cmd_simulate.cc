@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "core/output.h"
 #include "experiments/run_config.h"
 #include "sim/simulator.h"
 
@@ -22,10 +23,14 @@ void AddSimulateCommand(CLI::App& root) {
   auto args = std::make_shared<Args>();
   args->config.AddTo(cmd);
   cmd->add_option("-o,--output", args->output, "dataset directory to write")->required();
-  cmd->add_flag("--force", args->force, "replace a non-empty output directory");
+  cmd->add_flag("--force", args->force,
+                "replace an output directory vigil wrote (files it did not write are kept)");
   SetAction(cmd, [args] {
     experiments::RunConfig config =
         experiments::LoadRunConfig(args->config.config_path, args->config.AllOverrides());
+    std::vector<std::filesystem::path> inputs = experiments::RunConfigInputs(config);
+    inputs.emplace_back(args->config.config_path);
+    RefuseOutputOverInputs(args->output, inputs);
     const auto start = std::chrono::steady_clock::now();
     const Dataset d =
         sim::SimulateToDirectory(config.sim, config.seed, config::ToYaml(config), args->output, args->force);

@@ -30,7 +30,7 @@ void AddTemplatesCommand(CLI::App& root) {
   cmd->add_option("DATASET", args->dataset, "dataset directory or EuRoC imu0 CSV file")->required();
   cmd->add_option("-o,--output", args->output, "template library to write (YAML)")->required();
   args->detector.AddTo(cmd);
-  cmd->add_flag("--force", args->force, "replace an existing output file");
+  cmd->add_flag("--force", args->force, "replace a template library vigil wrote");
   SetAction(cmd, [args] {
     const detectors::DetectorOptions options = args->detector.Resolve();
     namespace fs = std::filesystem;
@@ -41,17 +41,21 @@ void AddTemplatesCommand(CLI::App& root) {
             ? dataset_files::kImuClean
             : dataset_files::kImu;
     const ImuInput input = ResolveImuInput(args->dataset, file_in_dir);
-    if (fs::exists(args->output, ec)) {
-      // Never rename over a device, directory or other special file (e.g. -o /dev/null).
-      if (!fs::is_regular_file(args->output, ec))
-        throw InputError(args->output + ": exists and is not a regular file");
-      if (!args->force) throw InputError(args->output + ": exists (use --force to replace it)");
-    }
+    RefuseOutputOverInputs(args->output, {input.imu, args->dataset});
+    // Never rename over a device, directory or other special file (e.g. -o /dev/null), nor over a file
+    // vigil did not write.
+    RefuseReplacingFile(args->output, args->force, detectors::kTemplateLibraryFirstLine);
     const ImuStream clean = ReadImuCsv(input.imu.string());
     if (is_dir && file_in_dir == std::string(dataset_files::kImu))
       std::fprintf(stderr, "vigil templates: %s has no %s, using %s: it must be glitch-free\n",
                    args->dataset.c_str(), dataset_files::kImuClean, dataset_files::kImu);
-    detectors::TemplateLibrary library = detectors::BuildTemplates(clean, options.dtw);
+    detectors::TemplateLibrary library;
+    try {
+      library = detectors::BuildTemplates(clean, options.dtw);
+    } catch (const InputError& e) {
+      throw InputError(input.imu.string() + ": " + e.what() +
+                       " (use a longer clean recording or fewer detector.dtw.templates)");
+    }
     library.source = input.imu.string();
     WriteFileAtomic(args->output, detectors::TemplateLibraryYaml(library));
     std::fprintf(stderr,

@@ -20,11 +20,11 @@ void SetAction(CLI::App* cmd, Action action);
 struct ConfigArgs {
   std::string config_path;
   std::vector<std::string> overrides;
-  long long seed = -1;  // -1: keep the config's seed
+  std::string seed;  // empty: keep the config's seed
 
   // Adds CONFIG (positional, required unless `optional`), --set and --seed to `cmd`.
   void AddTo(CLI::App* cmd, bool optional = false);
-  // The overrides with --seed appended as "seed=N".
+  // The overrides with --seed appended as "seed=N"; InputError unless --seed is an integer 0 .. 2^63 - 1.
   std::vector<std::string> AllOverrides() const;
 };
 

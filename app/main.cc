@@ -1,4 +1,6 @@
 // vigil: visual-inertial odometry under IMU faults. See README.md and ../shared/spec/cli.md.
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -20,12 +22,21 @@ void ConfigArgs::AddTo(CLI::App* cmd, bool optional) {
   auto* opt = cmd->add_option("CONFIG", config_path, "run configuration (YAML; see configs/README.md)");
   if (!optional) opt->required();
   cmd->add_option("--set", overrides, "override a config key: key.path=value (repeatable)")->take_all();
-  cmd->add_option("--seed", seed, "run seed (overrides the config's `seed`)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", seed, "run seed 0 .. 2^63 - 1 (overrides the config's `seed`)");
 }
 
 std::vector<std::string> ConfigArgs::AllOverrides() const {
   std::vector<std::string> all = overrides;
-  if (seed >= 0) all.push_back("seed=" + std::to_string(seed));
+  if (!seed.empty()) {
+    // The range of a config's `seed` (an integer key); beyond it CLI11 would clamp silently.
+    int64_t value = -1;
+    const char* end = seed.data() + seed.size();
+    const auto [ptr, ec] = std::from_chars(seed.data(), end, value);
+    if (ec != std::errc() || ptr != end || value < 0)
+      throw InputError("--seed: expected an integer from 0 to 9223372036854775807 (2^63 - 1), got '" + seed +
+                       "'");
+    all.push_back("seed=" + std::to_string(value));
+  }
   return all;
 }
 
@@ -59,7 +70,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return root.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "vigil: error: %s\n", e.what());
+    std::fprintf(stderr, "vigil: error: %s\n", vigil::OneLine(e.what()).c_str());
     return 2;
   }
   for (const CLI::App* cmd : root.get_subcommands()) {
@@ -70,10 +81,10 @@ int main(int argc, char** argv) {
     try {
       return it->second();
     } catch (const vigil::InputError& e) {
-      std::fprintf(stderr, "vigil: error: %s\n", e.what());
+      std::fprintf(stderr, "vigil: error: %s\n", e.what());  // already one line
       return 2;
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "vigil: error: %s\n", e.what());
+      std::fprintf(stderr, "vigil: error: %s\n", vigil::OneLine(e.what()).c_str());
       return 1;
     }
   }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/output.h"
 #include "experiments/progress.h"
 #include "experiments/run.h"
 #include "experiments/sweep_runner.h"
@@ -42,6 +43,18 @@ int SweepArgs::Run(const experiments::SweepSpec& spec, const char* command) cons
     return 0;
   }
   if (output.empty()) throw InputError("--output: required (the sweep directory), unless --list");
+  // The sweep file (unless it is the directory's own sweep.yaml, the record of this very sweep), its base
+  // configuration and every file a cell's configuration reads.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::vector<fs::path> inputs{spec.base};
+  if (fs::weakly_canonical(fs::absolute(spec.path), ec) !=
+      fs::weakly_canonical(fs::absolute(output) / "sweep.yaml", ec))
+    inputs.emplace_back(spec.path);
+  for (const experiments::SweepCell& cell : experiments::EnumerateCells(spec))
+    for (const auto& file : experiments::RunConfigInputs(experiments::ResolveCellConfig(spec, cell)))
+      inputs.emplace_back(file);
+  RefuseOutputOverInputs(output, inputs);
   experiments::SweepRunOptions options;
   options.threads = threads;
   options.resume = resume;

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "core/format.h"
+#include "core/output.h"
 
 namespace vigil::config {
 
@@ -29,7 +31,9 @@ bool InBounds(double x, const Bounds& b) { return b.Contains(x); }
 namespace {
 bool ScalarText(const YAML::Node& n, std::string* text, std::string* why) {
   if (!n.IsScalar()) {
-    *why = n.IsSequence() ? "expected a single value, got a list" : "expected a single value";
+    *why = n.IsNull()       ? "empty value: give a value or remove the key"
+           : n.IsSequence() ? "expected a single value, got a list"
+                            : "expected a single value, got a mapping";
     return false;
   }
   *text = n.Scalar();
@@ -94,9 +98,7 @@ bool Decode(const YAML::Node& n, double* out, std::string* why) {
   return true;
 }
 
-bool Decode(const YAML::Node& n, std::string* out, std::string* why) {
-  return ScalarText(n, out, why);
-}
+bool Decode(const YAML::Node& n, std::string* out, std::string* why) { return ScalarText(n, out, why); }
 
 Reader::Reader(YAML::Node node, std::string origin, bool has_lines, std::string prefix)
     : node_(std::move(node)), origin_(std::move(origin)), has_lines_(has_lines), prefix_(std::move(prefix)) {}
@@ -108,7 +110,9 @@ YAML::Node Reader::Take(const char* key) {
 }
 
 void Reader::Fail(const YAML::Node& n, const std::string& key, const std::string& why) const {
-  const int line = has_lines_ && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+  int line = has_lines_ && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+  // An empty value has no position of its own (yaml-cpp marks where the next token starts): use the key's.
+  if (has_lines_ && n.IsNull()) line = KeyLine(node_, key);
   throw InputError(Located(origin_, line, Path(key) + ": " + why));
 }
 
@@ -119,15 +123,62 @@ void Reader::RejectUnknownKeys() const {
   }
 }
 
+namespace {
+// yaml-cpp keeps both entries of a duplicated key and lookups see only the first: refuse them.
+void RejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& prefix) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      RejectDuplicateKeys(node[i], path, prefix + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> first_line;
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("(complex key)");
+    const std::string key_path = prefix.empty() ? key : prefix + "." + key;
+    const int line = it->first.Mark().line + 1;
+    const auto [seen, inserted] = first_line.emplace(key, line);
+    if (!inserted)
+      throw InputError(Located(
+          path, line,
+          key_path + ": duplicate key (first at line " + std::to_string(seen->second) + "); keep one"));
+    RejectDuplicateKeys(it->second, path, key_path);
+  }
+}
+}  // namespace
+
 YAML::Node LoadYamlFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open for reading");
-  std::stringstream text;
-  text << in.rdbuf();
+  constexpr std::uintmax_t kMaxConfigBytes = 16 << 20;  // a config is a few kB
+  const std::string text = ReadFile(path, kMaxConfigBytes);
+  YAML::Node root;
   try {
-    return YAML::Load(text.str());
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(Located(path, e.mark.line + 1, "YAML syntax error: " + e.msg));
+  }
+  RejectDuplicateKeys(root, path, "");
+  return root;
+}
+
+int KeyLine(const YAML::Node& root, const std::string& key_path) {
+  YAML::Node node = root;
+  std::size_t start = 0;
+  while (true) {
+    if (!node.IsMap()) return 0;
+    const std::size_t dot = key_path.find('.', start);
+    const std::string part =
+        key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    YAML::Node key_node, value;
+    for (auto it = node.begin(); it != node.end(); ++it)
+      if (it->first.IsScalar() && it->first.Scalar() == part) {
+        key_node = it->first;
+        value = it->second;
+        break;
+      }
+    if (!key_node) return 0;
+    if (dot == std::string::npos) return key_node.Mark().line + 1;
+    node.reset(value);
+    start = dot + 1;
   }
 }
 
@@ -137,7 +188,8 @@ YAML::Node NestKey(const std::string& key_path, const YAML::Node& value) {
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = key_path.find('.', start);
-    const std::string part = key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::string part =
+        key_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     if (part.empty()) throw InputError("--set " + key_path + ": empty key component");
     if (dot == std::string::npos) {
       cur[part] = value;
@@ -167,7 +219,8 @@ std::string Describer::Show(const std::string& v) { return v.empty() ? "\"\"" : 
 std::string KeysMarkdownTable(const std::vector<KeyDoc>& keys) {
   std::string s = "| key | type | default | allowed | description |\n|---|---|---|---|---|\n";
   for (const auto& k : keys) {
-    s += "| `" + k.path + "` | " + k.type + " | `" + k.default_value + "` | " + k.allowed + " | " + k.doc + " |\n";
+    s += "| `" + k.path + "` | " + k.type + " | `" + k.default_value + "` | " + k.allowed + " | " + k.doc +
+         " |\n";
   }
   return s;
 }

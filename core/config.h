@@ -185,6 +185,9 @@ class Reader {
 // unreadable.
 YAML::Node LoadYamlFile(const std::string& path);
 
+// The 1-based line of the key `key_path` ("imu.rate_hz") in a mapping loaded from a file; 0 when absent.
+int KeyLine(const YAML::Node& root, const std::string& key_path);
+
 // Loads `path` into `options` (defaults for absent keys); rejects unknown keys.
 template <class Options>
 void LoadFile(const std::string& path, Options& options) {

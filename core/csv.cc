@@ -1,21 +1,25 @@
 #include "core/csv.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.h"
 #include "core/format.h"
+#include "core/output.h"
 
 namespace vigil {
 
-CsvReader::CsvReader(std::string path, std::size_t num_columns, std::string what)
-    : path_(std::move(path)), num_columns_(num_columns), in_(path_) {
-  if (!in_) throw InputError(path_ + ": cannot open for reading");
-  std::string header;
-  if (!std::getline(in_, header)) throw InputError(Located(path_, 1, "empty file (expected a '#' header)"));
+CsvReader::CsvReader(const std::string& path, std::size_t num_columns, const std::string& what)
+    : CsvReader(ReadTextFile(path), num_columns, what) {}  // only a regular file: a FIFO would block
+
+CsvReader::CsvReader(TextFile file, std::size_t num_columns, const std::string& what)
+    : path_(std::move(file.path)), text_(std::move(file.text)), num_columns_(num_columns) {
+  std::string_view header;
+  if (!NextLine(&header)) throw InputError(Located(path_, 1, "empty file (expected a '#' header)"));
   line_ = 1;
-  if (!header.empty() && header.back() == '\r') header.pop_back();
   if (header.empty() || header[0] != '#') Fail("expected a header line starting with '#' (" + what + ")");
-  const std::string names = header.substr(1);
   std::vector<std::string_view> cols;
-  Split(names, &cols);
+  Split(header.substr(1), &cols);
   if (cols.size() != num_columns_) {
     Fail("header has " + std::to_string(cols.size()) + " columns, expected " + std::to_string(num_columns_) +
          " (" + what + ")");
@@ -23,7 +27,16 @@ CsvReader::CsvReader(std::string path, std::size_t num_columns, std::string what
   for (auto c : cols) header_.emplace_back(c);
 }
 
-void CsvReader::Split(const std::string& row, std::vector<std::string_view>* out) const {
+bool CsvReader::NextLine(std::string_view* line) {
+  if (pos_ >= text_.size()) return false;
+  const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+  *line = std::string_view(text_).substr(pos_, end - pos_);
+  pos_ = end + 1;
+  if (!line->empty() && line->back() == '\r') line->remove_suffix(1);
+  return true;
+}
+
+void CsvReader::Split(std::string_view row, std::vector<std::string_view>* out) const {
   out->clear();
   std::string_view rest(row);
   while (true) {
@@ -38,11 +51,11 @@ void CsvReader::Split(const std::string& row, std::vector<std::string_view>* out
 }
 
 bool CsvReader::Next() {
-  while (std::getline(in_, row_)) {
+  std::string_view row;
+  while (NextLine(&row)) {
     ++line_;
-    if (!row_.empty() && row_.back() == '\r') row_.pop_back();
-    if (row_.find_first_not_of(" \t") == std::string::npos) continue;
-    Split(row_, &fields_);
+    if (row.find_first_not_of(" \t") == std::string_view::npos) continue;
+    Split(row, &fields_);
     if (fields_.size() != num_columns_) {
       Fail("expected " + std::to_string(num_columns_) + " columns, found " + std::to_string(fields_.size()));
     }
@@ -69,7 +82,7 @@ int64_t CsvReader::Int(std::size_t column) const {
 
 void CsvReader::Fail(const std::string& reason) const { throw InputError(Located(path_, line_, reason)); }
 
-CsvWriter::CsvWriter(const std::string& header) : text_("#" + header + "\n") {}
+CsvWriter::CsvWriter(const std::string& header) : header_(header), text_("#" + header + "\n") {}
 
 void CsvWriter::Sep() {
   if (row_started_) text_ += ',';
@@ -77,6 +90,10 @@ void CsvWriter::Sep() {
 }
 
 CsvWriter& CsvWriter::operator<<(double v) {
+  if (!std::isfinite(v))
+    throw InputError("cannot write the non-finite value " + FormatDouble(v) + " into row " +
+                     std::to_string(rows_ + 1) + " of the CSV '#" + header_.substr(0, header_.find(',')) +
+                     ",...': an input setting is out of range (vigil never writes inf or nan)");
   Sep();
   text_ += FormatDouble(v);
   return *this;
@@ -96,6 +113,7 @@ CsvWriter& CsvWriter::operator<<(std::string_view text) {
 
 void CsvWriter::EndRow() {
   text_ += '\n';
+  ++rows_;
   row_started_ = false;
 }
 

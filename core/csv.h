@@ -10,19 +10,23 @@
 #include <string_view>
 #include <vector>
 
+#include "core/output.h"
+
 namespace vigil {
 
 class CsvReader {
  public:
-  // Opens `path` and reads its header; the header must start with '#' and have `num_columns` columns.
-  // `what` names the expected layout in errors (e.g. "EuRoC imu0 layout").
-  CsvReader(std::string path, std::size_t num_columns, std::string what);
+  // Reads `path` (a regular file, core/output.h ReadFile) and its header; the header must start with '#' and
+  // have `num_columns` columns. `what` names the expected layout in errors (e.g. "EuRoC imu0 layout").
+  CsvReader(const std::string& path, std::size_t num_columns, const std::string& what);
+  // The same on a file already in memory.
+  CsvReader(TextFile file, std::size_t num_columns, const std::string& what);
 
   // Reads the next non-empty row; false at the end of the file. Rows must have `num_columns` fields.
   bool Next();
 
-  double Double(std::size_t column) const;   // a finite number
-  int64_t Int(std::size_t column) const;     // an integer
+  double Double(std::size_t column) const;  // a finite number
+  int64_t Int(std::size_t column) const;    // an integer
   std::string_view Text(std::size_t column) const { return fields_[column]; }
   const std::string& header_column(std::size_t column) const { return header_[column]; }
 
@@ -31,13 +35,14 @@ class CsvReader {
   [[noreturn]] void Fail(const std::string& reason) const;
 
  private:
-  void Split(const std::string& row, std::vector<std::string_view>* out) const;
+  void Split(std::string_view row, std::vector<std::string_view>* out) const;
+  bool NextLine(std::string_view* line);  // without its "\n" / "\r\n"; false at the end
 
   std::string path_;
+  std::string text_;
+  std::size_t pos_ = 0;
   std::size_t num_columns_;
-  std::ifstream in_;
   std::vector<std::string> header_;
-  std::string row_;
   std::vector<std::string_view> fields_;
   int line_ = 0;
 };
@@ -46,7 +51,7 @@ class CsvReader {
 class CsvWriter {
  public:
   explicit CsvWriter(const std::string& header);  // header without the leading '#'
-  CsvWriter& operator<<(double v);
+  CsvWriter& operator<<(double v);                // InputError for inf / nan: never written
   CsvWriter& operator<<(int64_t v);
   CsvWriter& operator<<(int v) { return *this << static_cast<int64_t>(v); }
   CsvWriter& operator<<(std::string_view text);
@@ -55,7 +60,9 @@ class CsvWriter {
 
  private:
   void Sep();
+  std::string header_;
   std::string text_;
+  std::size_t rows_ = 0;
   bool row_started_ = false;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include <yaml-cpp/yaml.h>
@@ -36,6 +37,22 @@ void CheckIncreasing(const CsvReader& r, int64_t t_ns, int64_t* last, bool allow
 
 void CheckNotEmpty(const CsvReader& r, std::size_t n) {
   if (n == 0) r.Fail("no data rows");
+}
+
+// Column `c` of the current row, a number of magnitude at most `limit`.
+double Bounded(const CsvReader& r, std::size_t c, double limit) {
+  const double v = r.Double(c);
+  if (std::abs(v) > limit)
+    r.Fail(r.header_column(c) + ": " + FormatDouble(v) + " is beyond the limit of +-" + FormatDouble(limit));
+  return v;
+}
+
+// Column `c`, an id: an integer in 0 .. INT32_MAX.
+int Id(const CsvReader& r, std::size_t c) {
+  const int64_t id = r.Int(c);
+  if (id < 0 || id > std::numeric_limits<int>::max())
+    r.Fail(r.header_column(c) + ": " + std::to_string(id) + " is not an id (expected 0 .. 2147483647)");
+  return static_cast<int>(id);
 }
 
 // A quaternion that is unit to double precision is kept bit for bit (what vigil wrote reads back unchanged,
@@ -71,8 +88,10 @@ std::string ImuCsv(const ImuStream& imu) {
   return w.Str();
 }
 
-ImuStream ReadImuCsv(const std::string& path) {
-  CsvReader r(path, 7, "EuRoC imu0 layout: timestamp [ns], w_x, w_y, w_z, a_x, a_y, a_z");
+ImuStream ReadImuCsv(const std::string& path) { return ReadImuCsv(ReadTextFile(path)); }
+
+ImuStream ReadImuCsv(const TextFile& file) {
+  CsvReader r(file, 7, "EuRoC imu0 layout: timestamp [ns], w_x, w_y, w_z, a_x, a_y, a_z");
   ImuStream imu;
   int64_t last = INT64_MIN;
   while (r.Next()) {
@@ -80,8 +99,14 @@ ImuStream ReadImuCsv(const std::string& path) {
     s.t_ns = r.Int(0);
     // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
     // keeps the first of them); a timestamp going backwards is an error.
+    // (unsigned difference: no overflow between far-apart timestamps)
+    const uint64_t gap_ns = static_cast<uint64_t>(s.t_ns) - static_cast<uint64_t>(last);
+    if (last != INT64_MIN && s.t_ns > last && gap_ns > static_cast<uint64_t>(kMaxImuGap_ns))
+      r.Fail("timestamp " + std::to_string(s.t_ns) + ": " + FormatDouble(static_cast<double>(gap_ns) * 1e-9) +
+             " s after the previous sample, beyond the limit of " + FormatDouble(NsToS(kMaxImuGap_ns)) +
+             " s");
     CheckIncreasing(r, s.t_ns, &last, /*allow_equal=*/true);
-    for (int i = 0; i < kNumImuAxes; ++i) s.axis(i) = r.Double(1 + i);
+    for (int i = 0; i < kNumImuAxes; ++i) s.axis(i) = Bounded(r, 1 + i, kMaxAbsImuValue);
     imu.push_back(s);
   }
   CheckNotEmpty(r, imu.size());
@@ -99,20 +124,22 @@ std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches) {
 
 namespace {
 
-// Columns of the header line of `path` (0 when it cannot be read: CsvReader then reports the problem).
-std::size_t HeaderColumns(const std::string& path) {
-  std::ifstream in(path);
-  std::string header;
-  if (!std::getline(in, header)) return 0;
+// Columns of the header line of `text` (its first line; CsvReader reports a missing or wrong header).
+std::size_t HeaderColumns(const std::string& text) {
+  const std::string header = text.substr(0, text.find('\n'));
   return static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
 }
 
 }  // namespace
 
 std::vector<GlitchRecord> ReadGlitchesCsv(const std::string& path) {
+  return ReadGlitchesCsv(ReadTextFile(path));
+}
+
+std::vector<GlitchRecord> ReadGlitchesCsv(const TextFile& file) {
   // The three-column form (before fault kinds) holds offsets only.
-  const bool with_kind = HeaderColumns(path) != 3;
-  CsvReader r(path, with_kind ? 4 : 3,
+  const bool with_kind = HeaderColumns(file.text) != 3;
+  CsvReader r(file, with_kind ? 4 : 3,
               with_kind ? "timestamp [ns], axis, offset, kind" : "timestamp [ns], axis, offset");
   std::vector<GlitchRecord> out;
   int64_t last = INT64_MIN;
@@ -146,7 +173,11 @@ std::string GroundTruthCsv(const std::vector<NavState>& states) {
 }
 
 std::vector<NavState> ReadGroundTruthCsv(const std::string& path) {
-  CsvReader r(path, 17, "EuRoC state_groundtruth_estimate0 layout");
+  return ReadGroundTruthCsv(ReadTextFile(path));
+}
+
+std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
+  CsvReader r(file, 17, "EuRoC state_groundtruth_estimate0 layout");
   std::vector<NavState> out;
   int64_t last = INT64_MIN;
   while (r.Next()) {
@@ -155,14 +186,17 @@ std::vector<NavState> ReadGroundTruthCsv(const std::string& path) {
     // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
     // keeps the first of them); a timestamp going backwards is an error.
     CheckIncreasing(r, s.t_ns, &last, /*allow_equal=*/true);
-    s.p_W = Eigen::Vector3d(r.Double(1), r.Double(2), r.Double(3));
+    const auto rate = [&](std::size_t c) { return Bounded(r, c, kMaxAbsGroundTruthRate); };
+    s.p_W = Eigen::Vector3d(Bounded(r, 1, kMaxAbsCoordinate_m), Bounded(r, 2, kMaxAbsCoordinate_m),
+                            Bounded(r, 3, kMaxAbsCoordinate_m));
     s.q_WB = ReadUnitQuaternion(r, r.Double(4), r.Double(5), r.Double(6), r.Double(7));
-    s.v_W = Eigen::Vector3d(r.Double(8), r.Double(9), r.Double(10));
-    s.b_g = Eigen::Vector3d(r.Double(11), r.Double(12), r.Double(13));
-    s.b_a = Eigen::Vector3d(r.Double(14), r.Double(15), r.Double(16));
+    s.v_W = Eigen::Vector3d(rate(8), rate(9), rate(10));
+    s.b_g = Eigen::Vector3d(rate(11), rate(12), rate(13));
+    s.b_a = Eigen::Vector3d(rate(14), rate(15), rate(16));
     out.push_back(s);
   }
   CheckNotEmpty(r, out.size());
+  if (out.size() < 2) r.Fail("one ground-truth row: at least 2 are needed (a trajectory to evaluate)");
   return out;
 }
 
@@ -176,12 +210,19 @@ std::string LandmarksCsv(const std::vector<Landmark>& landmarks) {
 }
 
 std::vector<Landmark> ReadLandmarksCsv(const std::string& path) {
-  CsvReader r(path, 4, "id, x [m], y [m], z [m]");
+  return ReadLandmarksCsv(ReadTextFile(path));
+}
+
+std::vector<Landmark> ReadLandmarksCsv(const TextFile& file) {
+  CsvReader r(file, 4, "id, x [m], y [m], z [m]");
   std::vector<Landmark> out;
+  std::set<int> ids;
   while (r.Next()) {
     Landmark l;
-    l.id = static_cast<int>(r.Int(0));
-    l.p_W = Eigen::Vector3d(r.Double(1), r.Double(2), r.Double(3));
+    l.id = Id(r, 0);
+    if (!ids.insert(l.id).second) r.Fail("id: " + std::to_string(l.id) + " listed twice");
+    l.p_W = Eigen::Vector3d(Bounded(r, 1, kMaxAbsCoordinate_m), Bounded(r, 2, kMaxAbsCoordinate_m),
+                            Bounded(r, 3, kMaxAbsCoordinate_m));
     out.push_back(l);
   }
   return out;
@@ -198,9 +239,19 @@ std::string FeaturesCsv(const std::vector<CameraFrame>& frames) {
   return w.Str();
 }
 
-std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
-                                         const std::vector<int64_t>& frame_times_ns) {
-  CsvReader r(path, 4, "timestamp [ns], id, u [px], v [px]");
+std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path, const std::vector<int64_t>& frame_times_ns,
+                                         const FeatureChecks* checks) {
+  return ReadFeaturesCsv(ReadTextFile(path), frame_times_ns, checks);
+}
+
+std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file, const std::vector<int64_t>& frame_times_ns,
+                                         const FeatureChecks* checks) {
+  CsvReader r(file, 4, "timestamp [ns], id, u [px], v [px]");
+  std::set<int> known_ids, frame_ids;
+  if (checks && checks->landmarks)
+    for (const Landmark& l : *checks->landmarks) known_ids.insert(l.id);
+  const CameraModel* camera = checks ? checks->camera : nullptr;
+  const double margin_px = camera ? 10.0 * camera->pixel_noise_px + 1.0 : 0.0;
   std::vector<CameraFrame> frames;
   std::size_t next_time = 0;
   auto add_empty_until = [&](int64_t t_ns) {  // frames without observations, before t_ns
@@ -212,13 +263,28 @@ std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
   while (r.Next()) {
     const int64_t t_ns = r.Int(0);
     CheckIncreasing(r, t_ns, &last, /*allow_equal=*/true);
+    if (!frame_times_ns.empty() && (t_ns < frame_times_ns.front() || t_ns > frame_times_ns.back()))
+      r.Fail("timestamp " + std::to_string(t_ns) + " is outside the camera frames of the IMU time span (" +
+             std::to_string(frame_times_ns.front()) + " .. " + std::to_string(frame_times_ns.back()) + ")");
     if (frames.empty() || frames.back().t_ns != t_ns) {
       add_empty_until(t_ns);
       frames.push_back({t_ns, {}});
+      frame_ids.clear();
     }
     FeatureObservation o;
-    o.id = static_cast<int>(r.Int(1));
+    o.id = Id(r, 1);
+    if (!frame_ids.insert(o.id).second)
+      r.Fail("id: " + std::to_string(o.id) + " observed twice at timestamp " + std::to_string(t_ns));
+    if (checks && checks->landmarks && !known_ids.count(o.id))
+      r.Fail("id: " + std::to_string(o.id) + " is not a landmark of landmarks.csv");
     o.uv_px = Eigen::Vector2d(r.Double(2), r.Double(3));
+    if (camera) {
+      const double u = o.uv_px.x(), v = o.uv_px.y();
+      if (u < -margin_px || v < -margin_px || u > camera->width + margin_px || v > camera->height + margin_px)
+        r.Fail("pixel (" + FormatDouble(u) + ", " + FormatDouble(v) + ") is outside the " +
+               std::to_string(camera->width) + " x " + std::to_string(camera->height) +
+               " image (camera.yaml)");
+    }
     frames.back().features.push_back(o);
   }
   add_empty_until(INT64_MAX);
@@ -234,7 +300,7 @@ CameraModel ReadCameraYaml(const std::string& path) {
   CameraModel camera;
   config::LoadFile(path, camera);
   const std::string why = camera.Validate();
-  if (!why.empty()) throw InputError(path + ": " + why);
+  if (!why.empty()) throw InputError(Located(path, config::KeyLine(config::LoadYamlFile(path), "T_BC"), why));
   return camera;
 }
 
@@ -271,9 +337,17 @@ Dataset ReadDataset(const fs::path& dir) {
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());
   d.camera = ReadCameraYaml((dir / kCamera).string());
   // Camera frame times: every 1/rate_hz from the first IMU sample, within the IMU time span.
+  const double span_s = NsToS(d.imu.back().t_ns - d.imu.front().t_ns);
+  if (span_s * d.camera.rate_hz > kMaxCameraFrames)
+    throw InputError((dir / kCamera).string() + ": rate_hz: " + FormatDouble(d.camera.rate_hz) +
+                     " Hz over the " + FormatDouble(span_s) + " s of imu.csv gives more than " +
+                     std::to_string(static_cast<long long>(kMaxCameraFrames)) + " camera frames");
   const std::vector<int64_t> frame_times =
       CameraFrameTimes(d.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns);
-  d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times);
+  FeatureChecks checks;
+  checks.camera = &d.camera;
+  checks.landmarks = &d.landmarks;
+  d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times, &checks);
   return d;
 }
 
@@ -292,9 +366,11 @@ std::string TumTrajectory(const Trajectory& trajectory) {
   return s;
 }
 
-Trajectory ReadTumTrajectory(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open for reading");
+Trajectory ReadTumTrajectory(const std::string& path) { return ReadTumTrajectory(ReadTextFile(path)); }
+
+Trajectory ReadTumTrajectory(const TextFile& file) {
+  const std::string& path = file.path;
+  std::istringstream in(file.text);
   Trajectory out;
   std::string row;
   int line = 0;
@@ -317,6 +393,13 @@ Trajectory ReadTumTrajectory(const std::string& path) {
       throw InputError(
           Located(path, line,
                   "expected 8 columns (timestamp tx ty tz qx qy qz qw), found " + std::to_string(v.size())));
+    if (std::abs(v[0]) > 9e9)
+      throw InputError(Located(path, line, "timestamp: " + FormatDouble(v[0]) + " s is beyond +-9e9 s"));
+    for (int i = 1; i <= 3; ++i)
+      if (std::abs(v[i]) > kMaxAbsCoordinate_m)
+        throw InputError(Located(path, line,
+                                 "position: " + FormatDouble(v[i]) + " m is beyond the limit of +-" +
+                                     FormatDouble(kMaxAbsCoordinate_m) + " m"));
     StampedPose p;
     p.t_ns = SToNs(v[0]);
     if (last != INT64_MIN && p.t_ns <= last)
@@ -328,7 +411,7 @@ Trajectory ReadTumTrajectory(const std::string& path) {
     p.q_WB = AsUnit(q);
     out.push_back(p);
   }
-  if (out.empty()) throw InputError(path + ": no poses");
+  if (out.empty()) throw InputError(path + ": no poses (expected rows 'timestamp tx ty tz qx qy qz qw')");
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/output.h"
 #include "core/types.h"
 
 namespace vigil {
@@ -39,6 +40,22 @@ inline constexpr const char* kCamera = "camera.yaml";
 // records describe other faults.
 std::vector<GlitchRecord> OffsetGlitches(const std::vector<GlitchRecord>& records);
 
+// Limits every reader checks (besides finite numbers and increasing timestamps), so that a corrupt file is an
+// error naming its line instead of a NaN or an allocation that never ends.
+inline constexpr double kMaxAbsCoordinate_m = 1e6;     // positions (ground truth, landmarks)
+inline constexpr double kMaxAbsImuValue = 1e6;         // any gyroscope [rad/s] or accelerometer [m/s^2] axis
+inline constexpr int64_t kMaxImuGap_ns = 1000000000;   // between consecutive IMU samples (1 s)
+inline constexpr double kMaxAbsGroundTruthRate = 1e6;  // velocity [m/s] and bias components
+inline constexpr double kMaxCameraFrames = 1e7;        // camera.yaml rate_hz x the IMU time span
+
+// What a features.csv is checked against when its dataset is known (ReadDataset): ids of landmarks.csv,
+// pixels inside the image (with a margin of 10 x the pixel noise + 1 px), one observation per id and frame,
+// times within the camera frames of the IMU's time span.
+struct FeatureChecks {
+  const CameraModel* camera = nullptr;
+  const std::vector<Landmark>* landmarks = nullptr;
+};
+
 // Serialization of each file (the text is what is written; reading parses a path).
 std::string ImuCsv(const ImuStream& imu);
 std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches);
@@ -48,14 +65,24 @@ std::string LandmarksCsv(const std::vector<Landmark>& landmarks);
 std::string FeaturesCsv(const std::vector<CameraFrame>& frames);
 std::string CameraYaml(const CameraModel& camera);
 
+// Every reader takes a path (a regular file, core/output.h) or a file already in memory (the fuzz targets).
 ImuStream ReadImuCsv(const std::string& path);
+ImuStream ReadImuCsv(const TextFile& file);
 std::vector<GlitchRecord> ReadGlitchesCsv(const std::string& path);
+std::vector<GlitchRecord> ReadGlitchesCsv(const TextFile& file);
 std::vector<NavState> ReadGroundTruthCsv(const std::string& path);
+std::vector<NavState> ReadGroundTruthCsv(const TextFile& file);
 std::vector<Landmark> ReadLandmarksCsv(const std::string& path);
+std::vector<Landmark> ReadLandmarksCsv(const TextFile& file);
 // Groups rows by timestamp. Camera frames with no visible feature do not appear in the file; pass the
 // camera rate's frame times in `frame_times_ns` to get them back as empty frames (or leave it empty).
+// Ids must be >= 0 and distinct per frame; with `checks`, also the checks of FeatureChecks.
 std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
-                                         const std::vector<int64_t>& frame_times_ns = {});
+                                         const std::vector<int64_t>& frame_times_ns = {},
+                                         const FeatureChecks* checks = nullptr);
+std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file,
+                                         const std::vector<int64_t>& frame_times_ns = {},
+                                         const FeatureChecks* checks = nullptr);
 CameraModel ReadCameraYaml(const std::string& path);
 
 // Camera frame times of a recording: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while
@@ -64,11 +91,14 @@ std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_
 
 // Writes every file except config.yaml into `dir` (which must exist).
 void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset);
-// Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent).
+// Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent). Ground
+// truth needs at least 2 rows; camera.yaml's rate over the IMU time span gives at most kMaxCameraFrames
+// frames.
 Dataset ReadDataset(const std::filesystem::path& dir);
 
 // rpg / TUM trajectory text: "# timestamp tx ty tz qx qy qz qw", seconds with 9 decimals.
 std::string TumTrajectory(const Trajectory& trajectory);
 Trajectory ReadTumTrajectory(const std::string& path);
+Trajectory ReadTumTrajectory(const TextFile& file);
 
 }  // namespace vigil

@@ -6,12 +6,18 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace vigil {
 
+// `text` on one printable line: control characters (newline, tab, NUL, ...), DEL and bytes that are not
+// valid UTF-8 become C-style escapes ("\n", "\t", "\x00", "\xff"), so that an error quoting a user's bytes
+// never breaks the one-line format nor writes raw binary to a terminal.
+std::string OneLine(std::string_view text);
+
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message) : std::runtime_error(OneLine(message)) {}
 };
 
 // "file:line: message" (line is 1-based; line <= 0 leaves it out).

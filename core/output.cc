@@ -2,9 +2,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <system_error>
 
@@ -19,18 +21,96 @@ bool IsNonEmptyDirectory(const fs::path& dir) {
   return fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
 }
 
+// `path` with symbolic links, "." and ".." resolved (as far as it exists), absolute.
+fs::path Resolved(const fs::path& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) p = fs::absolute(path, ec).lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();  // "out/" -> "out"
+  return p;
+}
+
+// Whether `inner` is `outer` or lies inside it (both resolved).
+bool IsWithin(const fs::path& inner, const fs::path& outer) {
+  auto o = outer.begin(), i = inner.begin();
+  for (; o != outer.end(); ++o, ++i)
+    if (i == inner.end() || *i != *o) return false;
+  return true;
+}
+
+std::vector<std::string> EntryNames(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 void RefuseExisting(const fs::path& dir, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError(dir.string() + ": exists and is not a directory");
   if (!force && IsNonEmptyDirectory(dir))
-    throw InputError(dir.string() + ": output directory is not empty (use --force to replace it)");
+    throw InputError(dir.string() +
+                     ": output directory is not empty (use --force to replace a directory vigil wrote)");
 }
 }  // namespace
+
+std::vector<std::string> ReadOutputManifest(const fs::path& dir) {
+  const fs::path manifest = dir / kOutputManifest;
+  std::error_code ec;
+  if (!fs::is_regular_file(manifest, ec))
+    throw InputError(dir.string() + ": not written by vigil (no " + kOutputManifest +
+                     "), so --force does not replace it; move it away or choose another output");
+  std::istringstream in(ReadFile(manifest, 1 << 20));
+  std::string line;
+  if (!std::getline(in, line) || line != kOutputManifestHeader)
+    throw InputError(Located(manifest.string(), 1,
+                             std::string("expected '") + kOutputManifestHeader +
+                                 "': not a vigil manifest, so --force does not replace " + dir.string()));
+  std::vector<std::string> names;
+  while (std::getline(in, line))
+    if (!line.empty()) names.push_back(line);
+  return names;
+}
+
+void WriteOutputManifest(const fs::path& dir) {
+  std::string text = std::string(kOutputManifestHeader) + "\n";
+  for (const std::string& name : EntryNames(dir))
+    if (name != kOutputManifest) text += name + "\n";
+  WriteFileAtomic(dir / kOutputManifest, text);
+}
+
+void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>& inputs,
+                            const std::string& option) {
+  const fs::path out = Resolved(output);
+  std::error_code ec;
+  for (const fs::path& input : inputs) {
+    if (input.empty() || !fs::exists(input, ec)) continue;
+    const fs::path in = Resolved(input);
+    std::string relation;
+    if (in == out)
+      relation = "is the input ";
+    else if (IsWithin(in, out))
+      relation = "contains the input ";
+    else if (IsWithin(out, in))
+      relation = "lies inside the input ";
+    else
+      continue;
+    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() +
+                     ", which it would overwrite; choose an output outside every input");
+  }
+}
 
 StagedDirectory::StagedDirectory(fs::path final_dir, bool force) : final_(std::move(final_dir)) {
   if (final_.has_filename() == false) final_ = final_.parent_path();  // "out/" -> "out"
   RefuseExisting(final_, force);
+  if (IsNonEmptyDirectory(final_)) {
+    const std::vector<std::string> listed = ReadOutputManifest(final_);
+    const std::set<std::string> mine(listed.begin(), listed.end());
+    for (const std::string& name : EntryNames(final_))
+      if (name != kOutputManifest && !mine.count(name)) foreign_.push_back(name);
+  }
   staging_ = StagingPathFor(final_);
   std::error_code ec;
   fs::remove_all(staging_, ec);
@@ -49,14 +129,26 @@ StagedDirectory::~StagedDirectory() {
 }
 
 void StagedDirectory::Commit() {
+  WriteOutputManifest(staging_);
   std::error_code ec;
+  for (const std::string& name : foreign_)
+    if (fs::exists(staging_ / name, ec) || fs::is_symlink(staging_ / name, ec))
+      throw InputError((final_ / name).string() +
+                       ": not written by vigil and in the way of the new output; move it away and run again");
   if (fs::exists(final_, ec)) {
     // Only reached when forced, or when the directory is empty: move the old one aside first, so that a
-    // failure below leaves it in place.
+    // failure below leaves it in place; then the user's own entries move into the new directory.
     fs::path old = final_;
     old += ".old" + StagingSuffix();
     fs::rename(final_, old);
     fs::rename(staging_, final_);
+    committed_ = true;
+    for (const std::string& name : foreign_) {
+      fs::rename(old / name, final_ / name, ec);
+      if (ec)
+        throw std::runtime_error((old / name).string() + ": cannot move back into " + final_.string() + ": " +
+                                 ec.message() + " (the old directory is kept at " + old.string() + ")");
+    }
     fs::remove_all(old, ec);
   } else {
     fs::rename(staging_, final_);
@@ -64,11 +156,19 @@ void StagedDirectory::Commit() {
   committed_ = true;
 }
 
-void PrepareOutputDirectory(const fs::path& dir, bool force) {
-  RefuseExisting(dir, force);
+void RefuseReplacingFile(const fs::path& path, bool force, const std::string& vigil_header) {
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create output directory: " + ec.message());
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (!fs::exists(status)) return;
+  if (!fs::is_regular_file(fs::status(path, ec)))
+    throw InputError(path.string() + ": exists and is not a regular file; refusing to replace it");
+  if (!force) throw InputError(path.string() + ": exists (use --force to replace a file vigil wrote)");
+  std::ifstream in(path, std::ios::binary);
+  std::string head(vigil_header.size(), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  if (!in || head != vigil_header)
+    throw InputError(path.string() + ": not a file vigil wrote (it does not start with '" + vigil_header +
+                     "'), so --force does not replace it; move it away or choose another output");
 }
 
 void WriteFileAtomic(const fs::path& path, const std::string& content) {
@@ -102,12 +202,30 @@ bool WriteFileIfAbsent(const fs::path& path, const std::string& content) {
   throw std::runtime_error(path.string() + ": cannot create: " + std::strerror(link_errno));
 }
 
-std::string ReadFile(const fs::path& path) {
+void RequireRegularFile(const fs::path& path, std::uintmax_t max_bytes) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) throw InputError(path.string() + ": cannot open for reading: no such file");
+  if (fs::is_directory(status)) throw InputError(path.string() + ": is a directory; expected a file");
+  if (!fs::is_regular_file(status))
+    throw InputError(path.string() + ": not a regular file (a FIFO, socket or device); expected a file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > max_bytes)
+    throw InputError(path.string() + ": " + std::to_string(size) + " bytes, larger than the limit of " +
+                     std::to_string(max_bytes) + " bytes for an input file");
+}
+
+std::string ReadFile(const fs::path& path, std::uintmax_t max_bytes) {
+  RequireRegularFile(path, max_bytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open for reading");
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+TextFile ReadTextFile(const std::string& path, std::uintmax_t max_bytes) {
+  return {path, ReadFile(path, max_bytes)};
 }
 
 }  // namespace vigil

@@ -196,7 +196,8 @@ std::vector<double> SliceDistances(const TemplateLibrary& library, const ImuStre
 
 std::string TemplateLibraryYaml(const TemplateLibrary& library) {
   std::string y;
-  y += "# vigil DTW template library (written by `vigil templates`; see detectors/template_library.h).\n";
+  y += std::string(kTemplateLibraryFirstLine) +
+       " (written by `vigil templates`; see detectors/template_library.h).\n";
   y += "# Templates are normalized slices shortened to template_length rows; channels in m/s^2 and rad/s.\n";
   y += std::string("format: ") + kFormat + "\n";
   {

@@ -61,6 +61,8 @@ TemplateLibrary BuildTemplates(const ImuStream& clean, const DtwOptions& options
 TemplateLibrary ReadTemplateLibrary(const std::string& path);
 // The YAML text of a library (ReadTemplateLibrary reads it back exactly: numbers in round-trip form).
 std::string TemplateLibraryYaml(const TemplateLibrary& library);
+// The first line of every file TemplateLibraryYaml writes (how `vigil templates --force` recognises one).
+inline constexpr const char* kTemplateLibraryFirstLine = "# vigil DTW template library";
 
 // The best-template distances (double precision, Algorithm 1) of every complete slice of `stream`, after
 // the library's normalization: the distribution the threshold is compared with.

@@ -7,6 +7,10 @@ namespace vigil::experiments {
 nlohmann::json RunToDirectory(const std::string& config_path, const std::vector<std::string>& overrides,
                               const RunOptions& options, const std::filesystem::path& dir, bool force) {
   const RunConfig config = LoadRunConfig(config_path, overrides);
+  std::vector<std::filesystem::path> inputs = RunConfigInputs(config);
+  inputs.emplace_back(config_path);
+  inputs.push_back(options.dataset_dir);
+  RefuseOutputOverInputs(dir, inputs);
   StagedDirectory out(dir, force);
   const nlohmann::json metrics = ExecuteRun(config, options, out.path());
   out.Commit();

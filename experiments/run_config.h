@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -38,5 +39,9 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
 
 // Cross-field checks that a single key's bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateRunConfig(const RunConfig& config, const std::string& origin);
+
+// The files a run with `config` reads besides its config file (waypoints, DTW templates): what its output
+// must not overwrite (core/output.h RefuseOutputOverInputs).
+std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config);
 
 }  // namespace vigil::experiments

@@ -15,8 +15,16 @@ double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * second
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const TrajectoryEvaluation& evaluation, const nlohmann::json& detection) {
   nlohmann::json m;
-  m["status"] = result.ok ? "ok" : "failed";
-  m["failure_reason"] = result.ok ? "" : result.failure_reason;
+  // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success.
+  const bool evaluated =
+      std::isfinite(evaluation.ate_trans_m.rmse) && std::isfinite(evaluation.ate_rot_deg.rmse);
+  const bool ok = result.ok && evaluated;
+  m["status"] = ok ? "ok" : "failed";
+  m["failure_reason"] = ok           ? ""
+                        : !result.ok ? result.failure_reason
+                                     : "evaluation: the ATE is not finite (" +
+                                           std::to_string(evaluation.matched_poses) +
+                                           " matched poses); check the ground truth and the estimate";
   m["seed"] = summary.seed;
   m["duration_s"] = summary.duration_s;
   const RunWallTimes& w = summary.wall;

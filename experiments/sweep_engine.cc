@@ -144,6 +144,10 @@ void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
   const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
   if (non_empty && force && !resume) {
     // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
+    if (!fs::exists(dir / "sweep.yaml", ec))
+      throw InputError(dir.string() +
+                       ": no sweep.yaml: not a sweep directory vigil wrote, so --force does not "
+                       "replace it; move it away or choose another output");
     fs::remove_all(dir / "runs", ec);
     fs::remove_all(dir / "figures", ec);
     for (const char* name : {"sweep.yaml", "results.csv", "timing.csv", "summary.md"})

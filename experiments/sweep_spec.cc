@@ -92,11 +92,17 @@ std::vector<uint64_t> ParseSeeds(const std::string& path, const YAML::Node& n) {
       if (!field) Fail(path, it->first, "seeds." + key, "unknown key (expected count, first)");
       if (!config::Decode(it->second, field, &why)) Fail(path, it->second, "seeds." + key, why);
     }
+    if (count > kMaxSweepSeeds)
+      Fail(path, n, "seeds.count", "must be at most " + std::to_string(kMaxSweepSeeds));
+    if (count > 0 && first > UINT64_MAX - (count - 1))
+      Fail(path, n, "seeds.first", "first + count - 1 must be at most 2^64 - 1");
     for (uint64_t i = 0; i < count; ++i) seeds.push_back(first + i);
   } else {
     Fail(path, n, "seeds", "expected a list of seeds or {count: N, first: S}");
   }
   if (seeds.empty()) Fail(path, n, "seeds", "at least one seed is needed");
+  if (seeds.size() > kMaxSweepSeeds)
+    Fail(path, n, "seeds", "at most " + std::to_string(kMaxSweepSeeds) + " seeds");
   std::set<uint64_t> unique(seeds.begin(), seeds.end());
   if (unique.size() != seeds.size()) Fail(path, n, "seeds", "seeds must be distinct");
   return seeds;
@@ -234,6 +240,16 @@ SweepSpec LoadSweepSpec(const std::string& path) {
   if (spec.table_methods.empty())
     for (const auto& m : spec.methods) spec.table_methods.push_back(m.label);
 
+  uint64_t runs = spec.seeds.size() * spec.methods.size();
+  for (const auto& a : spec.axes) {
+    if (runs > kMaxSweepRuns) break;
+    runs *= std::max<std::size_t>(a.settings.size(), 1);
+  }
+  if (runs > kMaxSweepRuns)
+    Fail(path, seeds_node, "seeds",
+         "the grid has more than " + std::to_string(kMaxSweepRuns) +
+             " runs (axes x methods x seeds); split the sweep");
+
   std::set<std::string> axis_keys;
   for (const auto& a : spec.axes)
     if (!axis_keys.insert(a.key).second) Fail(path, axes_node, "axes." + a.key, "duplicate axis");
@@ -267,7 +283,10 @@ SweepSpec LoadSweepSpec(const std::string& path) {
 
 void SetSeedCount(SweepSpec* spec, uint64_t count) {
   if (count == 0) throw InputError("--seeds: must be at least 1");
+  if (count > kMaxSweepSeeds) throw InputError("--seeds: must be at most " + std::to_string(kMaxSweepSeeds));
   const uint64_t first = spec->seeds.front();
+  if (first > UINT64_MAX - (count - 1))
+    throw InputError("--seeds " + std::to_string(count) + ": the last seed would exceed 2^64 - 1");
   if (spec->template_seed >= first && spec->template_seed - first < count)
     throw InputError("--seeds " + std::to_string(count) + ": seeds " + std::to_string(first) + ".." +
                      std::to_string(first + count - 1) + " would include the template seed " +

@@ -73,6 +73,10 @@ struct SweepSpec {
   std::size_t run_count() const { return cell_count() * seeds.size(); }
 };
 
+// Most seeds a sweep may have (checked before anything is allocated or written), and most runs in all.
+inline constexpr uint64_t kMaxSweepSeeds = 100000;
+inline constexpr uint64_t kMaxSweepRuns = 1000000;
+
 // Reads and checks a sweep file; InputError "file:line: key: reason".
 SweepSpec LoadSweepSpec(const std::string& path);
 

@@ -126,3 +126,47 @@ TEST(Config, DescribesEveryKeyWithItsDefault) {
 
 }  // namespace
 }  // namespace vigil::config
+
+namespace vigil::config {
+namespace {
+using vigil::testing::InputErrorOf;
+using vigil::testing::TempDir;
+
+TEST(Config, DuplicateKeysAreRefusedWithBothLines) {
+  TempDir dir;
+  Outer o;
+  const std::string top = dir.File("top.yaml", "count: 7\nseed: 2\ncount: 8\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadFile(top, o); }),
+            top + ":3: count: duplicate key (first at line 1); keep one");
+  const std::string nested = dir.File("nested.yaml", "inner:\n  rate: 0.25\n  rate: 0.5\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadFile(nested, o); }),
+            nested + ":3: inner.rate: duplicate key (first at line 2); keep one");
+}
+
+TEST(Config, AnEmptyValueIsReportedOnItsOwnLine) {
+  TempDir dir;
+  Outer o;
+  const std::string path = dir.File("empty.yaml", "name: a\ncount:\n\n\nseed: 2\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadFile(path, o); }),
+            path + ":2: count: empty value: give a value or remove the key");
+}
+
+TEST(Config, ADirectoryOrAFifoIsNotAConfigFile) {
+  TempDir dir;
+  Outer o;
+  EXPECT_NE(InputErrorOf([&] { LoadFile(dir.path().string(), o); }).find("is a directory"),
+            std::string::npos);
+  EXPECT_NE(InputErrorOf([&] { LoadFile("/dev/zero", o); }).find("not a regular file"), std::string::npos);
+}
+
+TEST(Config, BlockScalarValuesGiveAOneLineError) {
+  TempDir dir;
+  Outer o;
+  const std::string path = dir.File("block.yaml", "count: |\n  5\n  6\n");
+  const std::string error = InputErrorOf([&] { LoadFile(path, o); });
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  EXPECT_EQ(error.rfind(path + ":1: count:", 0), 0u) << error;
+}
+
+}  // namespace
+}  // namespace vigil::config

@@ -1,5 +1,7 @@
 #include "core/dataset.h"
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "tests/core/test_util.h"
@@ -26,8 +28,11 @@ TEST(Dataset, DirectoryRoundTrips) {
   d.glitches.push_back({d.imu[4].t_ns, ImuAxis::kAz, 50.0});
   d.landmarks = {{0, {1, 2, 3}}, {1, {4, 5, 6}}};
   d.camera.rate_hz = 40.0;  // a frame every 25 ms: 0, 25, 50, 75, 100 ms
-  d.frames = {{0, {{0, {10, 20}}}}, {25'000'000, {}}, {50'000'000, {{1, {30, 40}}, {0, {11, 21}}}},
-              {75'000'000, {}}, {100'000'000, {}}};
+  d.frames = {{0, {{0, {10, 20}}}},
+              {25'000'000, {}},
+              {50'000'000, {{1, {30, 40}}, {0, {11, 21}}}},
+              {75'000'000, {}},
+              {100'000'000, {}}};
   WriteDataset(tmp.path(), d);
   const Dataset back = ReadDataset(tmp.path());
   ASSERT_EQ(back.imu.size(), 21u);
@@ -41,6 +46,104 @@ TEST(Dataset, DirectoryRoundTrips) {
   ASSERT_EQ(back.frames.size(), 5u);
   EXPECT_EQ(back.frames[2].features.size(), 2u);
   EXPECT_TRUE(back.frames[4].features.empty());
+}
+
+// A valid dataset directory with a few files to corrupt.
+Dataset SmallDataset() {
+  Dataset d;
+  for (int i = 0; i < 21; ++i) {
+    ImuSample s;
+    s.t_ns = i * 5'000'000;
+    s.a_B = Eigen::Vector3d(0, 0, 9.81);
+    d.imu.push_back(s);
+    NavState x;
+    x.t_ns = s.t_ns;
+    x.p_W = Eigen::Vector3d(i, 0, 0);
+    d.groundtruth.push_back(x);
+  }
+  d.imu_clean = d.imu;
+  d.landmarks = {{0, {1, 2, 3}}, {1, {4, 5, 6}}};
+  d.camera.rate_hz = 40.0;
+  d.frames = {{0, {{0, {10, 20}}}},
+              {25'000'000, {}},
+              {50'000'000, {{1, {30, 40}}, {0, {11, 21}}}},
+              {75'000'000, {}},
+              {100'000'000, {}}};
+  return d;
+}
+
+std::string ReadError(const TempDir& tmp, const std::string& file, const std::string& content) {
+  WriteDataset(tmp.path(), SmallDataset());
+  tmp.File(file, content);
+  return testing::InputErrorOf([&] { ReadDataset(tmp.path()); });
+}
+
+TEST(Dataset, FeatureValuesAreChecked) {
+  TempDir tmp;
+  const std::string header = "#timestamp [ns],id,u [px],v [px]\n";
+  EXPECT_NE(
+      ReadError(tmp, "features.csv", header + "0,0,1e308,20\n").find("features.csv:2: pixel (1e+308, 20)"),
+      std::string::npos);
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "0,0,-1e9,20\n").find("outside the 640 x 640 image"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "0,7,10,20\n").find("id: 7 is not a landmark"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "0,-1,10,20\n").find("id: -1 is not an id"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "0,0,10,20\n0,0,11,21\n").find("observed twice"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "900000000,0,10,20\n").find("outside the camera frames"),
+            std::string::npos);
+}
+
+TEST(Dataset, GroundTruthValuesAreChecked) {
+  TempDir tmp;
+  Dataset d = SmallDataset();
+  std::string one_row = GroundTruthCsv({d.groundtruth.front()});
+  EXPECT_NE(ReadError(tmp, "groundtruth.csv", one_row).find("groundtruth.csv:2: one ground-truth row"),
+            std::string::npos);
+  d.groundtruth[3].p_W.x() = 1e308;
+  EXPECT_NE(
+      ReadError(tmp, "groundtruth.csv", GroundTruthCsv(d.groundtruth)).find("groundtruth.csv:5: p_RS_R_x"),
+      std::string::npos);
+}
+
+TEST(Dataset, LandmarkIdsAreDistinctAndValid) {
+  TempDir tmp;
+  EXPECT_NE(ReadError(tmp, "landmarks.csv", "#id,x,y,z\n0,1,2,3\n0,4,5,6\n")
+                .find("landmarks.csv:3: id: 0 listed twice"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "landmarks.csv", "#id,x,y,z\n4294967296,1,2,3\n").find("is not an id"),
+            std::string::npos);
+}
+
+TEST(Dataset, ImuGapsAndValuesHaveLimits) {
+  TempDir tmp;
+  Dataset d = SmallDataset();
+  d.imu[5].t_ns = d.imu[4].t_ns + 1'000'000'000'000'000;  // 1e6 s later
+  for (std::size_t i = 6; i < d.imu.size(); ++i) d.imu[i].t_ns = d.imu[i - 1].t_ns + 5'000'000;
+  EXPECT_NE(ReadError(tmp, "imu.csv", ImuCsv(d.imu)).find("imu.csv:7: timestamp"), std::string::npos);
+  d = SmallDataset();
+  d.imu[2].a_B.x() = 1e300;
+  EXPECT_NE(ReadError(tmp, "imu.csv", ImuCsv(d.imu)).find("imu.csv:4: a_RS_S_x [m s^-2]: 1e+300 is beyond"),
+            std::string::npos);
+}
+
+TEST(Dataset, NonFiniteNumbersAreNeverWritten) {
+  Dataset d = SmallDataset();
+  d.imu[2].a_B.x() = std::numeric_limits<double>::infinity();
+  EXPECT_NE(
+      testing::InputErrorOf([&] { ImuCsv(d.imu); }).find("cannot write the non-finite value inf into row 3"),
+      std::string::npos);
+}
+
+TEST(Dataset, TumTrajectoryValuesAreChecked) {
+  TempDir tmp;
+  const std::string path = tmp.File("t.txt", "0 1e308 0 0 0 0 0 1\n");
+  EXPECT_NE(testing::InputErrorOf([&] { ReadTumTrajectory(path); }).find(":1: position: 1e+308 m is beyond"),
+            std::string::npos);
+  const std::string late = tmp.File("late.txt", "1e300 0 0 0 0 0 0 1\n");
+  EXPECT_NE(testing::InputErrorOf([&] { ReadTumTrajectory(late); }).find("timestamp"), std::string::npos);
 }
 
 }  // namespace

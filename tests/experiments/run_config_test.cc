@@ -52,5 +52,18 @@ TEST(RunConfig, ShippedConfigsLoadAndEveryKeyIsDocumented) {
       << "configs/README.md's key table is out of date: run scripts/update-config-docs";
 }
 
+TEST(RunConfig, CrossKeyChecksNameTheLineOrTheSet) {
+  TempDir dir;
+  const std::string path = dir.File("c.yaml", "seed: 1\nimu:\n  rate_hz: 20\ncamera:\n  rate_hz: 30\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path); }),
+            path + ":3: imu.rate_hz: must be at least camera.rate_hz");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"imu.rate_hz=25"}); }),
+            "--set imu.rate_hz: must be at least camera.rate_hz");
+  const std::string tbc = dir.File("t.yaml", "camera:\n  T_BC: [1, 2]\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(tbc); }).rfind(tbc + ":2: camera.T_BC: ", 0), 0u);
+  const std::string axes = dir.File("a.yaml", "glitch:\n  enabled: true\n  axes: [az, az]\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(axes); }), axes + ":3: glitch.axes: axis az listed twice");
+}
+
 }  // namespace
 }  // namespace vigil::experiments

@@ -143,7 +143,8 @@ TEST(Run, NoTrajectoriesNoFigureDataWritesOnlyConfigAndMetrics) {
   options.write_trajectories = false;
   options.write_figure_data = false;
   RunToDirectory(kPaper, With(kTiny, {"detector.type=hampel"}), options, tmp.path() / "run", false);
-  EXPECT_EQ(FileNames(tmp.path() / "run"), (std::vector<std::string>{"config.yaml", "metrics.json"}));
+  EXPECT_EQ(FileNames(tmp.path() / "run"),
+            (std::vector<std::string>{".vigil-output", "config.yaml", "metrics.json"}));
 }
 
 // detections.csv only when a detector ran; the figure data (landmarks, the glitched IMU axis raw / clean /
@@ -152,9 +153,10 @@ TEST(Run, WritesFigureDataAndDetectionsOnlyWithADetector) {
   TempDir tmp;
   RunToDirectory(kPaper, With(kTiny, {"glitch.enabled=true", "glitch.axes=[wy]"}), RunOptions{},
                  tmp.path() / "none", false);
-  EXPECT_EQ(FileNames(tmp.path() / "none"),
-            (std::vector<std::string>{"config.yaml", "imu_axis.csv", "landmarks.csv", "metrics.json",
-                                      "stamped_groundtruth.txt", "stamped_traj_estimate.txt"}));
+  EXPECT_EQ(
+      FileNames(tmp.path() / "none"),
+      (std::vector<std::string>{".vigil-output", "config.yaml", "imu_axis.csv", "landmarks.csv",
+                                "metrics.json", "stamped_groundtruth.txt", "stamped_traj_estimate.txt"}));
   const ImuAxisRecord none = ReadImuAxisCsv((tmp.path() / "none" / "imu_axis.csv").string());
   EXPECT_EQ(none.axis, ImuAxis::kWy);
   EXPECT_EQ(none.mitigated, none.raw);
@@ -164,7 +166,8 @@ TEST(Run, WritesFigureDataAndDetectionsOnlyWithADetector) {
   RunToDirectory(kPaper, With(kTiny, {"glitch.enabled=true", "detector.type=threshold"}), no_trajectories,
                  tmp.path() / "threshold", false);
   EXPECT_EQ(FileNames(tmp.path() / "threshold"),
-            (std::vector<std::string>{"config.yaml", "imu_axis.csv", "landmarks.csv", "metrics.json"}));
+            (std::vector<std::string>{".vigil-output", "config.yaml", "imu_axis.csv", "landmarks.csv",
+                                      "metrics.json"}));
   const ImuAxisRecord threshold = ReadImuAxisCsv((tmp.path() / "threshold" / "imu_axis.csv").string());
   EXPECT_EQ(threshold.axis, ImuAxis::kAz);
   EXPECT_NE(threshold.mitigated, threshold.raw);
@@ -194,15 +197,23 @@ TEST(Run, BadInputWritesNothing) {
   EXPECT_EQ(left, (std::vector<std::string>{"bad.yaml"}));
 }
 
-TEST(Run, RefusesANonEmptyOutputUnlessForced) {
+TEST(Run, ForceReplacesOnlyARunDirectoryVigilWroteAndKeepsOtherFiles) {
   TempDir tmp;
+  const fs::path mine = tmp.path() / "mine";
+  fs::create_directories(mine);
+  tmp.File("mine/notes.txt", "mine");
+  EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kTiny, RunOptions{}, mine, false); }), "");
+  EXPECT_NE(InputErrorOf([&] {
+              RunToDirectory(kPaper, kTiny, RunOptions{}, mine, true);
+            }).find("not written by vigil"),
+            std::string::npos);
+  EXPECT_EQ(ReadFile(mine / "notes.txt"), "mine");
   const fs::path dir = tmp.path() / "run";
-  fs::create_directories(dir);
+  RunToDirectory(kPaper, kTiny, RunOptions{}, dir, false);
   tmp.File("run/notes.txt", "mine");
   EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kTiny, RunOptions{}, dir, false); }), "");
-  EXPECT_EQ(ReadFile(dir / "notes.txt"), "mine");
   RunToDirectory(kPaper, kTiny, RunOptions{}, dir, /*force=*/true);
-  EXPECT_FALSE(fs::exists(dir / "notes.txt"));
+  EXPECT_EQ(ReadFile(dir / "notes.txt"), "mine");  // not vigil's: kept
   EXPECT_TRUE(fs::exists(dir / "metrics.json"));
 }
 

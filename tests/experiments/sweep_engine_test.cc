@@ -190,9 +190,10 @@ TEST(SweepEngine, OutputDirectoryRules) {
   dir.File("sweep/notes.txt", "mine");
   EXPECT_NE(InputErrorOf([&] { PrepareSweepDirectory(out, false, false); }).find("use --resume"),
             std::string::npos);
-  fs::create_directories(out / "runs" / "a");
   EXPECT_NE(InputErrorOf([&] { PrepareSweepDirectory(out, false, true); }).find("not a sweep directory"),
-            std::string::npos);
+            std::string::npos);  // --force never touches a directory without sweep.yaml
+  EXPECT_EQ(ReadFile(out / "results.csv"), "old");
+  fs::create_directories(out / "runs" / "a");
   dir.File("sweep/sweep.yaml", "x");
   PrepareSweepDirectory(out, false, true);
   EXPECT_FALSE(fs::exists(out / "runs"));

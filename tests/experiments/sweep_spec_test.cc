@@ -112,6 +112,24 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
             0u);
 }
 
+TEST(SweepSpec, SizesAreCheckedBeforeAnythingIsAllocated) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\n");
+  auto error = [&](const std::string& body) {
+    const std::string p = dir.File("bad.yaml", "base: base.yaml\n" + body);
+    return InputErrorOf([&] { LoadSweepSpec(p); });
+  };
+  const std::string f = (dir.path() / "bad.yaml").string();
+  EXPECT_EQ(error("methods: {a: none}\nseeds: {count: 100000000}\n"),
+            f + ":3: seeds.count: must be at most 100000");
+  EXPECT_NE(error("axes: {duration_s: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]}\nmethods: {a: none}\n"
+                  "seeds: {count: 100000, first: 2000}\n")
+                .find("more than 1000000 runs"),
+            std::string::npos);
+  EXPECT_EQ(error("methods: {a: none}\nseeds: [1]\nseeds: [2]\n"),
+            f + ":4: seeds: duplicate key (first at line 3); keep one");
+}
+
 TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
   const SweepSpec paper = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_sweep.yaml");
   EXPECT_EQ(paper.run_count(), 3u * 6u * 10u);

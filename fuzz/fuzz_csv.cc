@@ -1,0 +1,45 @@
+// libFuzzer target for one CSV / text reader, chosen by VIGIL_FUZZ_READER at compile time
+// (fuzz/CMakeLists.txt): imu, glitches, groundtruth, landmarks, features (with the checks ReadDataset
+// applies) and tum.
+#include "core/dataset.h"
+#include "fuzz/fuzz_input.h"
+
+namespace {
+using namespace vigil;
+
+void Read(const TextFile& path) {
+  const std::string reader = VIGIL_FUZZ_READER;
+  if (reader == "imu") {
+    (void)ReadImuCsv(path);
+  } else if (reader == "glitches") {
+    (void)ReadGlitchesCsv(path);
+  } else if (reader == "groundtruth") {
+    (void)ReadGroundTruthCsv(path);
+  } else if (reader == "landmarks") {
+    (void)ReadLandmarksCsv(path);
+  } else if (reader == "features") {
+    static const CameraModel camera;
+    static const std::vector<Landmark> landmarks = [] {
+      std::vector<Landmark> l(200);
+      for (int i = 0; i < 200; ++i) l[static_cast<std::size_t>(i)].id = i;
+      return l;
+    }();
+    static const std::vector<int64_t> frame_times = CameraFrameTimes(camera.rate_hz, 0, 2000000000);
+    FeatureChecks checks;
+    checks.camera = &camera;
+    checks.landmarks = &landmarks;
+    (void)ReadFeaturesCsv(path, frame_times, &checks);
+  } else if (reader == "tum") {
+    (void)ReadTumTrajectory(path);
+  } else {
+    std::abort();
+  }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  // In memory: the path variants only add ReadFile (fuzzed by the YAML targets) to the same parsers.
+  const TextFile file{"<fuzz input>", std::string(reinterpret_cast<const char*>(data), size)};
+  fuzz::ExpectOnlyInputErrors([&] { Read(file); });
+  return 0;
+}

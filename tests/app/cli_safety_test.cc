@@ -1,0 +1,186 @@
+// The data-safety and bad-input promises of every command, checked on the built `vigil`: an output that is,
+// contains or lies inside an input is refused with or without --force, --force replaces only what vigil
+// wrote, and bad input gets one line "vigil: error: ..." with exit status 2.
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/output.h"
+#include "tests/core/test_util.h"
+
+namespace vigil {
+namespace {
+namespace fs = std::filesystem;
+using testing::TempDir;
+
+struct Result {
+  int status = -1;
+  std::string err;
+};
+
+// Runs `vigil ARGS` (a shell word list) with stdout discarded; returns its exit status and stderr.
+Result Vigil(const TempDir& tmp, const std::string& args) {
+  const fs::path err = tmp.path() / "stderr.txt";
+  const std::string command = std::string(VIGIL_BINARY) + " " + args + " >/dev/null 2>" + err.string();
+  const int raw = std::system(command.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.err = ReadFile(err);
+  fs::remove(err);
+  return r;
+}
+
+// A short simulated dataset (2 s of the paper scenario) at tmp/ds, with its config at tmp/config.yaml.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config_ = tmp_.File("config.yaml", "duration_s: 2\nglitch:\n  enabled: true\n");
+    ds_ = (tmp_.path() / "ds").string();
+    ASSERT_EQ(Vigil(tmp_, "simulate " + config_ + " -o " + ds_).status, 0);
+    listing_ = Listing(ds_);
+  }
+  // Every entry of `dir` with its size: what must not change.
+  static std::string Listing(const fs::path& dir) {
+    std::string s;
+    std::set<std::string> lines;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      lines.insert(e.path().lexically_relative(dir).string() + " " +
+                   (e.is_regular_file() ? std::to_string(e.file_size()) : "dir"));
+    for (const auto& line : lines) s += line + "\n";
+    return s;
+  }
+  void ExpectRefused(const std::string& args, const std::string& reason) {
+    const Result r = Vigil(tmp_, args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  }
+  void ExpectDatasetIntact() { EXPECT_EQ(Listing(ds_), listing_); }
+
+  TempDir tmp_;
+  std::string config_, ds_, listing_;
+};
+
+TEST_F(Cli, CleanNeverWritesOverItsDataset) {
+  for (const char* force : {"", " --force"}) {
+    ExpectRefused("clean " + ds_ + " -o " + ds_ + " --detector threshold" + force, "the output is the input");
+    ExpectRefused("clean " + ds_ + "/imu.csv -o " + ds_ + "/../ds/ --detector threshold" + force,
+                  "contains the input");
+    ExpectRefused("clean " + ds_ + " -o " + ds_ + "/cleaned --detector threshold" + force,
+                  "lies inside the input");
+    ExpectRefused("clean " + ds_ + " -o " + tmp_.path().string() + " --detector threshold" + force,
+                  "contains the input");
+  }
+  ExpectDatasetIntact();
+  EXPECT_EQ(
+      Vigil(tmp_, "clean " + ds_ + " -o " + tmp_.path().string() + "/cleaned --detector threshold").status,
+      0);
+}
+
+TEST_F(Cli, RunNeverWritesOverItsDatasetOrConfig) {
+  for (const char* force : {"", " --force"}) {
+    ExpectRefused("run " + config_ + " --dataset " + ds_ + " -o " + ds_ + force, "the output is the input");
+    ExpectRefused("run " + config_ + " -o " + tmp_.path().string() + force, "contains the input");
+  }
+  fs::create_directory_symlink(ds_, tmp_.path() / "link");
+  ExpectRefused(
+      "run " + config_ + " --dataset " + ds_ + " -o " + (tmp_.path() / "link").string() + " --force",
+      "the output is the input");
+  ExpectDatasetIntact();
+}
+
+TEST_F(Cli, SimulateNeverWritesOverItsConfig) {
+  ExpectRefused("simulate " + config_ + " -o " + tmp_.path().string() + " --force", "contains the input");
+  ExpectRefused("simulate " + config_ + " -o " + config_ + " --force", "the output is the input");
+  EXPECT_TRUE(fs::is_regular_file(config_));
+}
+
+TEST_F(Cli, TemplatesNeverOverwritesTheRecording) {
+  for (const char* force : {"", " --force"})
+    ExpectRefused("templates " + ds_ + " -o " + ds_ + "/imu.csv" + force, "lies inside the input");
+  ExpectRefused("templates " + ds_ + "/imu.csv -o " + ds_ + "/imu.csv --force", "the output is the input");
+  ExpectDatasetIntact();
+  const std::string mine = tmp_.File("mine.yaml", "user: data\n");
+  ExpectRefused("templates " + ds_ + " -o " + mine + " --force", "not a file vigil wrote");
+  EXPECT_EQ(ReadFile(mine), "user: data\n");
+}
+
+TEST_F(Cli, PlotNeverWritesOverItsInput) {
+  for (const char* force : {"", " --force"})
+    ExpectRefused("plot dataset " + ds_ + " -o " + ds_ + force, "the output is the input");
+  ExpectRefused("plot dataset " + ds_ + " -o " + ds_ + "/imu.csv --force", "the output is the input");
+  ExpectDatasetIntact();
+}
+
+TEST_F(Cli, SweepNeverWritesOverItsSweepFileOrBase) {
+  const std::string sweep =
+      tmp_.File("sweep.yaml", "base: config.yaml\nmethods: {original: none}\nseeds: [1]\n");
+  for (const char* force : {"", " --force"})
+    ExpectRefused("sweep " + sweep + " -o " + tmp_.path().string() + force + " --quiet",
+                  "contains the input");
+  ExpectRefused("sweep " + sweep + " -o " + sweep + " --quiet", "the output is the input");
+  EXPECT_TRUE(fs::is_regular_file(sweep));
+  ExpectRefused("paper --sweep " + sweep + " -o " + tmp_.path().string() + " --force --quiet",
+                "contains the input");
+}
+
+TEST_F(Cli, ForceRefusesADirectoryVigilDidNotWrite) {
+  const fs::path mine = tmp_.path() / "mine";
+  fs::create_directory(mine);
+  tmp_.File("mine/thesis.tex", "precious");
+  ExpectRefused("simulate " + config_ + " -o " + mine.string() + " --force", "not written by vigil");
+  ExpectRefused("clean " + ds_ + " -o " + mine.string() + " --detector none --force", "not written by vigil");
+  ExpectRefused("plot dataset " + ds_ + " -o " + mine.string() + " --force", "not written by vigil");
+  ExpectRefused("sweep " + tmp_.File("s.yaml", "base: config.yaml\nmethods: {original: none}\nseeds: [1]\n") +
+                    " -o " + mine.string() + " --force --quiet",
+                "not a sweep directory");
+  EXPECT_EQ(ReadFile(mine / "thesis.tex"), "precious");
+  EXPECT_EQ(std::distance(fs::directory_iterator(mine), fs::directory_iterator()), 1);
+}
+
+TEST_F(Cli, ForceKeepsFilesVigilDidNotWrite) {
+  tmp_.File("ds/notes.txt", "mine");
+  ASSERT_EQ(Vigil(tmp_, "simulate " + config_ + " -o " + ds_ + " --force --seed 2").status, 0);
+  EXPECT_EQ(ReadFile(fs::path(ds_) / "notes.txt"), "mine");
+  const std::string figures = (tmp_.path() / "figures").string();
+  ASSERT_EQ(Vigil(tmp_, "plot dataset " + ds_ + " -o " + figures + " --width 200 --height 200").status, 0);
+  tmp_.File("figures/keep.txt", "mine");
+  ASSERT_EQ(
+      Vigil(tmp_, "plot dataset " + ds_ + " -o " + figures + " --width 200 --height 200 --force").status, 0);
+  EXPECT_EQ(ReadFile(fs::path(figures) / "keep.txt"), "mine");
+}
+
+TEST_F(Cli, BadSeedsAreRefusedNotClamped) {
+  ExpectRefused("config " + config_ + " --seed 9223372036854775808", "--seed: expected an integer");
+  ExpectRefused("config " + config_ + " --seed 18446744073709551616", "--seed: expected an integer");
+  ExpectRefused("config " + config_ + " --seed -1", "--seed");
+  const Result r = Vigil(tmp_, "config " + config_ + " --seed 9223372036854775807");
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST_F(Cli, OnlyRegularFilesAreReadAsConfig) {
+  ExpectRefused("config " + tmp_.path().string(), "is a directory");
+  ExpectRefused("config /dev/zero", "not a regular file");
+  const fs::path fifo = tmp_.path() / "fifo.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  ExpectRefused("config " + fifo.string(), "not a regular file");  // returns instead of blocking
+  ExpectRefused(
+      "run " + config_ + " --dataset " + tmp_.path().string() + "/nowhere -o " + tmp_.path().string() + "/r",
+      "nowhere");
+}
+
+TEST_F(Cli, DuplicateKeysAndBlockScalarsGiveOneLineErrors) {
+  ExpectRefused("config " + tmp_.File("dup.yaml", "seed: 1\nduration_s: 2\nseed: 3\n"),
+                "dup.yaml:3: seed: duplicate key (first at line 1)");
+  ExpectRefused("config " + tmp_.File("block.yaml", "seed: |\n  5\n  6\n"), "block.yaml:1: seed:");
+  ExpectRefused("config " + tmp_.File("nul.yaml", std::string("seed: 5\0x\n", 10)), "");
+}
+
+}  // namespace
+}  // namespace vigil
