@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 // What a figure directory `out` must not overwrite: every entry of the input directory `dir` except `out`
 // itself when it is a directory there (DIR/figures by default), and the dataset a run directory was computed
-// on.
+// on (never read for the figures, but a user's recording all the same).
 std::vector<fs::path> PlotInputs(const std::string& kind, const fs::path& dir, const fs::path& out) {
   std::vector<fs::path> inputs;
   std::error_code ec;
@@ -28,9 +28,11 @@ std::vector<fs::path> PlotInputs(const std::string& kind, const fs::path& dir, c
       if (!e.is_directory(ec) || fs::weakly_canonical(e.path(), ec) != out_resolved)
         inputs.push_back(e.path());
   }
-  if (kind == "run")
-    if (const auto dataset = plots::RecordedDatasetOf(plots::LoadRunDirectory(dir)))
-      inputs.push_back(*dataset);
+  if (kind == "run") {  // metrics.json names the dataset of a `vigil run --dataset` run
+    const nlohmann::json& metrics = plots::LoadRunDirectory(dir).metrics;
+    if (metrics.is_object() && metrics.contains("dataset") && metrics["dataset"].is_string())
+      inputs.emplace_back(metrics["dataset"].get<std::string>());
+  }
   return inputs;
 }
 
