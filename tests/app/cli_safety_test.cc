@@ -69,17 +69,17 @@ class Cli : public ::testing::Test {
 
 TEST_F(Cli, CleanNeverWritesOverItsDataset) {
   for (const char* force : {"", " --force"}) {
-    ExpectRefused("clean " + ds_ + " -o " + ds_ + " --detector threshold" + force, "the output is the input");
-    ExpectRefused("clean " + ds_ + "/imu.csv -o " + ds_ + "/../ds/ --detector threshold" + force,
+    ExpectRefused("clean " + ds_ + " -o " + ds_ + " --detector hampel" + force, "the output is the input");
+    ExpectRefused("clean " + ds_ + "/imu.csv -o " + ds_ + "/../ds/ --detector hampel" + force,
                   "contains the input");
-    ExpectRefused("clean " + ds_ + " -o " + ds_ + "/cleaned --detector threshold" + force,
+    ExpectRefused("clean " + ds_ + " -o " + ds_ + "/cleaned --detector hampel" + force,
                   "lies inside the input");
-    ExpectRefused("clean " + ds_ + " -o " + tmp_.path().string() + " --detector threshold" + force,
+    ExpectRefused("clean " + ds_ + " -o " + tmp_.path().string() + " --detector hampel" + force,
                   "contains the input");
   }
   ExpectDatasetIntact();
   EXPECT_EQ(
-      Vigil(tmp_, "clean " + ds_ + " -o " + tmp_.path().string() + "/cleaned --detector threshold").status,
+      Vigil(tmp_, "clean " + ds_ + " -o " + tmp_.path().string() + "/cleaned --detector hampel").status,
       0);
 }
 

@@ -66,16 +66,26 @@ TEST(Simulator, DatasetRoundTripsThroughTheFiles) {
   EXPECT_EQ(back.groundtruth[4000].q_WB.coeffs(), d.groundtruth[4000].q_WB.coeffs());
 }
 
-TEST(Simulator, RefusesNonEmptyOutputUnlessForced) {
+// A non-empty output is refused; --force replaces only a directory vigil wrote, and keeps the files in it
+// that vigil did not write.
+TEST(Simulator, RefusesNonEmptyOutputAndForceKeepsWhatVigilDidNotWrite) {
   TempDir tmp;
   const fs::path out = tmp.path() / "out";
   fs::create_directories(out);
   tmp.File("out/keep.txt", "precious");
   EXPECT_NE(InputErrorOf([&] { SimulateCommand(kPaper, {}, out); }), "");
-  EXPECT_TRUE(fs::exists(out / "keep.txt"));
-  SimulateCommand(kPaper, {}, out, /*force=*/true);
-  EXPECT_FALSE(fs::exists(out / "keep.txt"));
-  EXPECT_TRUE(fs::exists(out / "features.csv"));
+  EXPECT_NE(
+      InputErrorOf([&] { SimulateCommand(kPaper, {}, out, /*force=*/true); }).find("not written by vigil"),
+      std::string::npos);
+  EXPECT_EQ(ReadFile(out / "keep.txt"), "precious");
+  EXPECT_FALSE(fs::exists(out / "features.csv"));
+
+  const fs::path mine = tmp.path() / "mine";
+  SimulateCommand(kPaper, {"duration_s=2"}, mine);
+  tmp.File("mine/notes.txt", "the user's own");
+  SimulateCommand(kPaper, {"duration_s=2"}, mine, /*force=*/true);
+  EXPECT_EQ(ReadFile(mine / "notes.txt"), "the user's own");
+  EXPECT_TRUE(fs::exists(mine / "features.csv"));
 }
 
 TEST(Simulator, BadConfigsAreRejectedWithTheKeyAndWriteNothing) {
