@@ -7,25 +7,6 @@
 
 namespace vigil::detectors {
 
-void RelativeThresholdDetector::AxisState::Accept(double value) {
-  const int n = static_cast<int>(ring.size());
-  if (size == n) {
-    sum -= ring[next];
-  } else {
-    ++size;
-  }
-  ring[next] = value;
-  sum += value;
-  next = (next + 1) % n;
-  run = 0;
-}
-
-void RelativeThresholdDetector::AxisState::Restart(double value) {
-  next = 0, size = 0, run = 0;
-  sum = 0.0;
-  Accept(value);
-}
-
 RelativeThresholdDetector::RelativeThresholdDetector(const RelativeThresholdOptions& options)
     : options_(options) {
   if (options_.bounds.size() != static_cast<std::size_t>(kNumImuAxes))
@@ -36,7 +17,7 @@ RelativeThresholdDetector::RelativeThresholdDetector(const RelativeThresholdOpti
   if (options_.reference_samples < 1)
     throw InputError("detector.relative_threshold.reference_samples: must be >= 1");
   if (options_.max_run < 1) throw InputError("detector.relative_threshold.max_run: must be >= 1");
-  for (AxisState& axis : axes_) axis.ring.assign(options_.reference_samples, 0.0);
+  for (AxisState& axis : axes_) axis.reference = RunningMean(options_.reference_samples);
 }
 
 void RelativeThresholdDetector::Push(const ImuSample& raw, std::vector<DetectedSample>* out) {
@@ -44,11 +25,11 @@ void RelativeThresholdDetector::Push(const ImuSample& raw, std::vector<DetectedS
   for (int a = 0; a < kNumImuAxes; ++a) {
     AxisState& axis = axes_[a];
     const double value = raw.axis(a);
-    if (axis.size == 0) {
+    if (axis.reference.empty()) {
       axis.Accept(value);
       continue;
     }
-    const double reference = axis.Mean();
+    const double reference = axis.reference.Mean();
     const double deviation = value - reference;
     const double bound = options_.bounds[a];
     if (std::abs(deviation) <= bound) {

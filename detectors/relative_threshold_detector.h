@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "detectors/detector.h"
+#include "detectors/running_mean.h"
 
 namespace vigil::detectors {
 
@@ -33,12 +34,10 @@ class RelativeThresholdDetector final : public Detector {
  private:
   // The running reference of one axis: a ring of the last n normal values.
   struct AxisState {
-    std::vector<double> ring;
-    int next = 0, size = 0, run = 0;
-    double sum = 0.0;
-    void Accept(double value);
-    void Restart(double value);
-    double Mean() const { return sum / size; }
+    RunningMean reference;  // the last reference_samples normal values
+    int run = 0;            // consecutive abnormal values
+    void Accept(double value) { reference.Add(value), run = 0; }
+    void Restart(double value) { reference.Clear(), Accept(value); }
   };
 
   RelativeThresholdOptions options_;

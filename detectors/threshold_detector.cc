@@ -7,18 +7,6 @@
 
 namespace vigil::detectors {
 
-void ThresholdDetector::History::Add(double value) {
-  const int n = static_cast<int>(ring.size());
-  if (size == n) {
-    sum -= ring[next];
-  } else {
-    ++size;
-  }
-  ring[next] = value;
-  sum += value;
-  next = (next + 1) % n;
-}
-
 ThresholdDetector::ThresholdDetector(const ThresholdOptions& options) : options_(options) {
   for (const auto* bounds : {&options_.lower, &options_.upper})
     if (bounds->size() != static_cast<std::size_t>(kNumImuAxes))
@@ -30,7 +18,7 @@ ThresholdDetector::ThresholdDetector(const ThresholdOptions& options) : options_
       throw InputError("detector.threshold.lower: must be <= detector.threshold.upper on every axis (axis " +
                        std::to_string(a) + ")");
   if (options_.mean_samples < 1) throw InputError("detector.threshold.mean_samples: must be >= 1");
-  for (History& h : history_) h.ring.assign(options_.mean_samples, 0.0);
+  history_.fill(RunningMean(options_.mean_samples));
 }
 
 void ThresholdDetector::Push(const ImuSample& raw, std::vector<DetectedSample>* out) {
@@ -41,8 +29,8 @@ void ThresholdDetector::Push(const ImuSample& raw, std::vector<DetectedSample>* 
     if (value > upper || value < lower) {
       result.flagged_axes |= static_cast<uint8_t>(1u << a);
       const double clamped = value > upper ? upper : lower;
-      History& h = history_[a];
-      value = options_.mitigation == ThresholdMitigation::kMean && h.size > 0 ? h.sum / h.size : clamped;
+      const RunningMean& h = history_[a];
+      value = options_.mitigation == ThresholdMitigation::kMean && !h.empty() ? h.Mean() : clamped;
     }
     history_[a].Add(value);
   }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "detectors/detector.h"
+#include "detectors/running_mean.h"
 
 namespace vigil::detectors {
 
@@ -36,15 +37,8 @@ class ThresholdDetector final : public Detector {
 
  private:
   // The last mean_samples output values of one axis (mitigation mean).
-  struct History {
-    std::vector<double> ring;
-    int next = 0, size = 0;
-    double sum = 0.0;
-    void Add(double value);
-  };
-
   ThresholdOptions options_;
-  std::array<History, kNumImuAxes> history_;
+  std::array<RunningMean, kNumImuAxes> history_;  // the last mean_samples output values
 };
 
 // Per-axis bounds from a clean stream (see above): fills bounds->lower and bounds->upper (6 each) using
