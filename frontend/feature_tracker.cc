@@ -1,0 +1,199 @@
+#include "frontend/feature_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/video/tracking.hpp>
+
+namespace vigil::frontend {
+namespace {
+
+// RANSAC needs at least this many correspondences (the eight-point minimum).
+constexpr std::size_t kMinRansacPoints = 8;
+// Publication slack: a frame is published once 0.9 periods of max_rate_hz have passed, so that timestamp
+// jitter does not skip a frame that is due.
+constexpr double kPublishSlack = 0.9;
+
+}  // namespace
+
+FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options, const TrackerCamera& camera)
+    : options_(options), camera_(camera), undistorter_(camera) {
+  if (options_.clahe)
+    clahe_ = cv::createCLAHE(options_.clahe_clip_limit, cv::Size(options_.clahe_tiles, options_.clahe_tiles));
+}
+
+bool FeatureTracker::InsideBorder(const cv::Point2f& p) const {
+  const float b = static_cast<float>(options_.border_px);
+  return p.x >= b && p.y >= b && p.x < static_cast<float>(camera_.width) - b &&
+         p.y < static_cast<float>(camera_.height) - b;
+}
+
+bool FeatureTracker::InsideImage(const cv::Point2f& p) const {
+  return p.x >= 0.0f && p.y >= 0.0f && p.x < static_cast<float>(camera_.width) &&
+         p.y < static_cast<float>(camera_.height);
+}
+
+bool FeatureTracker::ShouldPublish(int64_t t_ns) const {
+  if (!last_published_t_ns_ || options_.max_rate_hz <= 0.0) return true;
+  const double elapsed_s = static_cast<double>(t_ns - *last_published_t_ns_) * 1e-9;
+  return elapsed_s >= kPublishSlack / options_.max_rate_hz;
+}
+
+std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t_ns) {
+  if (image.type() != CV_8UC1)
+    throw std::invalid_argument("feature tracker: expected an 8-bit grayscale image");
+  if (image.cols != camera_.width || image.rows != camera_.height)
+    throw std::invalid_argument("feature tracker: image of " + std::to_string(image.cols) + " x " +
+                                std::to_string(image.rows) + " px, the camera's is " +
+                                std::to_string(camera_.width) + " x " + std::to_string(camera_.height));
+  if (last_t_ns_ && t_ns <= *last_t_ns_)
+    throw std::invalid_argument("feature tracker: timestamps must increase");
+  last_t_ns_ = t_ns;
+  ++stats_.images;
+
+  cv::Mat gray;
+  if (clahe_)
+    clahe_->apply(image, gray);
+  else
+    gray = image.clone();
+
+  if (!previous_image_.empty() && !tracks_.empty()) TrackIntoImage(gray);
+  previous_image_ = gray;
+  if (!ShouldPublish(t_ns)) return std::nullopt;
+  last_published_t_ns_ = t_ns;
+  ++stats_.published_frames;
+
+  std::vector<cv::Point2f> raw(tracks_.size());
+  for (std::size_t i = 0; i < tracks_.size(); ++i) raw[i] = tracks_[i].raw_px;
+  const std::vector<cv::Point2f> undistorted = undistorter_.Undistort(raw);
+  // Tracks that existed at the last published frame keep their undistorted pixel of then until RANSAC.
+  RejectWithFundamental(undistorted);
+  EnforceSpacing();
+  DetectNewCorners(gray);
+
+  CameraFrame frame;
+  frame.t_ns = t_ns;
+  frame.features.reserve(tracks_.size());
+  for (TrackState& track : tracks_) {
+    ++track.length;
+    frame.features.push_back({track.id, Eigen::Vector2d(track.undistorted_px.x, track.undistorted_px.y)});
+  }
+  std::sort(frame.features.begin(), frame.features.end(),
+            [](const FeatureObservation& a, const FeatureObservation& b) { return a.id < b.id; });
+  return frame;
+}
+
+void FeatureTracker::TrackIntoImage(const cv::Mat& image) {
+  std::vector<cv::Point2f> before(tracks_.size()), after;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) before[i] = tracks_[i].raw_px;
+  std::vector<uchar> status;
+  std::vector<float> error;
+  const cv::Size window(options_.klt_window_px, options_.klt_window_px);
+  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options_.klt_max_iterations,
+                                  options_.klt_epsilon_px);
+  cv::calcOpticalFlowPyrLK(previous_image_, image, before, after, status, error, window,
+                           options_.klt_pyramid_levels, criteria);
+  std::vector<uchar> back_status;
+  std::vector<cv::Point2f> back;
+  if (options_.backward_check) {
+    back = before;
+    cv::calcOpticalFlowPyrLK(image, previous_image_, after, back, back_status, error, window,
+                             options_.klt_pyramid_levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW);
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    bool ok = status[i] != 0 && InsideBorder(after[i]);
+    if (ok && options_.backward_check)
+      ok = back_status[i] != 0 && cv::norm(back[i] - before[i]) <= options_.backward_check_px;
+    if (!ok) {
+      ++stats_.klt_failures;
+      continue;
+    }
+    tracks_[i].raw_px = after[i];
+    tracks_[kept++] = tracks_[i];
+  }
+  tracks_.resize(kept);
+}
+
+void FeatureTracker::RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now) {
+  std::vector<uchar> inlier(tracks_.size(), 1);
+  if (options_.ransac && tracks_.size() >= kMinRansacPoints) {
+    std::vector<cv::Point2f> then(tracks_.size());
+    for (std::size_t i = 0; i < tracks_.size(); ++i) then[i] = tracks_[i].undistorted_px;
+    cv::findFundamentalMat(then, undistorted_now, cv::FM_RANSAC, options_.ransac_threshold_px,
+                           options_.ransac_confidence, inlier);
+    // A degenerate configuration returns no model and an empty mask: then keep every track.
+    if (inlier.size() != tracks_.size()) inlier.assign(tracks_.size(), 1);
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    if (!inlier[i]) {
+      ++stats_.ransac_outliers;
+      continue;
+    }
+    if (!InsideImage(undistorted_now[i])) {
+      ++stats_.outside_undistorted;
+      continue;
+    }
+    tracks_[i].undistorted_px = undistorted_now[i];
+    tracks_[kept++] = tracks_[i];
+  }
+  tracks_.resize(kept);
+}
+
+void FeatureTracker::EnforceSpacing() {
+  if (options_.min_distance_px <= 0.0) return;
+  std::vector<std::size_t> order(tracks_.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (tracks_[a].length != tracks_[b].length) return tracks_[a].length > tracks_[b].length;
+    return tracks_[a].id < tracks_[b].id;
+  });
+  const double min_d2 = options_.min_distance_px * options_.min_distance_px;
+  std::vector<TrackState> kept;
+  kept.reserve(tracks_.size());
+  for (std::size_t i : order) {
+    const cv::Point2f p = tracks_[i].raw_px;
+    const bool crowded = std::any_of(kept.begin(), kept.end(), [&](const TrackState& k) {
+      const cv::Point2f d = k.raw_px - p;
+      return static_cast<double>(d.x) * d.x + static_cast<double>(d.y) * d.y < min_d2;
+    });
+    if (crowded) {
+      ++stats_.spacing_drops;
+      continue;
+    }
+    kept.push_back(tracks_[i]);
+  }
+  tracks_ = std::move(kept);
+}
+
+void FeatureTracker::DetectNewCorners(const cv::Mat& image) {
+  const int wanted = options_.max_features - static_cast<int>(tracks_.size());
+  if (wanted <= 0) return;
+  cv::Mat mask(image.size(), CV_8UC1, cv::Scalar(255));
+  const int radius = static_cast<int>(std::ceil(options_.min_distance_px));
+  for (const TrackState& track : tracks_)
+    cv::circle(mask, cv::Point(cvRound(track.raw_px.x), cvRound(track.raw_px.y)), radius, cv::Scalar(0),
+               cv::FILLED);
+  std::vector<cv::Point2f> corners;
+  cv::goodFeaturesToTrack(image, corners, wanted, options_.quality_level, options_.min_distance_px, mask);
+  std::vector<cv::Point2f> inside;
+  for (const cv::Point2f& c : corners)
+    if (InsideBorder(c)) inside.push_back(c);
+  const std::vector<cv::Point2f> undistorted = undistorter_.Undistort(inside);
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    if (!InsideImage(undistorted[i])) continue;
+    TrackState track;
+    track.id = next_id_++;
+    track.raw_px = inside[i];
+    track.undistorted_px = undistorted[i];
+    tracks_.push_back(track);
+    ++stats_.tracks_created;
+  }
+}
+
+}  // namespace vigil::frontend

@@ -1,0 +1,67 @@
+// Options of the KLT feature tracker (frontend/feature_tracker.h): VINS-Mono's tracker design with its EuRoC
+// settings as defaults (Shi-Tomasi corners, quality 0.01, 30 px apart, at most 150; pyramidal Lucas-Kanade with
+// a 21 x 21 window over 3 pyramid levels; RANSAC fundamental matrix at 1 px on undistorted points).
+#pragma once
+
+#include "core/config.h"
+
+namespace vigil::frontend {
+
+struct FeatureTrackerOptions {
+  // Corner detection (Shi-Tomasi, cv::goodFeaturesToTrack).
+  int max_features = 150;          // tracks kept per frame; new corners fill up to this count
+  double quality_level = 0.01;     // corner score relative to the best corner of the image
+  double min_distance_px = 30.0;   // between a new corner and any track, and between kept tracks
+  int border_px = 1;               // tracks closer than this to the image border are dropped
+  // Pyramidal Lucas-Kanade (cv::calcOpticalFlowPyrLK) from one frame into the next.
+  int klt_window_px = 21;          // square search window side
+  int klt_pyramid_levels = 3;      // levels above the full image (0: no pyramid)
+  int klt_max_iterations = 30;     // per level
+  double klt_epsilon_px = 0.01;    // stop when the update is below this
+  bool backward_check = false;     // also track back into the previous frame and drop inconsistent tracks
+  double backward_check_px = 0.5;  // largest distance between a point and its back-tracked position
+  // Outlier rejection: RANSAC fundamental matrix between the last published frame and this one, on the
+  // undistorted pixels.
+  bool ransac = true;
+  double ransac_threshold_px = 1.0;  // distance to the epipolar line of an inlier
+  double ransac_confidence = 0.99;
+  // Contrast-limited adaptive histogram equalization of each image before anything else.
+  bool clahe = false;
+  double clahe_clip_limit = 3.0;
+  int clahe_tiles = 8;  // tiles per image side
+  // Publication rate: every image is tracked, but at most max_rate_hz frames are published (0: every frame).
+  // RANSAC, new corners and the output happen on published frames only.
+  double max_rate_hz = 0.0;
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("max_features", max_features, "largest number of tracks per frame", Bounds::AtLeast(1));
+    v.Field("quality_level", quality_level, "Shi-Tomasi corner quality relative to the best corner",
+            Bounds{0.0, 1.0, true, false});
+    v.Field("min_distance_px", min_distance_px, "least distance between two tracks [px]",
+            Bounds::NonNegative());
+    v.Field("border_px", border_px, "tracks closer than this to the image border are dropped [px]",
+            Bounds::NonNegative());
+    v.Field("klt_window_px", klt_window_px, "Lucas-Kanade window side [px] (odd)", Bounds::AtLeast(3));
+    v.Field("klt_pyramid_levels", klt_pyramid_levels, "Lucas-Kanade pyramid levels above the full image",
+            Bounds::Closed(0, 8));
+    v.Field("klt_max_iterations", klt_max_iterations, "Lucas-Kanade iterations per level",
+            Bounds::AtLeast(1));
+    v.Field("klt_epsilon_px", klt_epsilon_px, "Lucas-Kanade convergence threshold [px]", Bounds::Positive());
+    v.Field("backward_check", backward_check, "track back into the previous frame and drop inconsistent tracks");
+    v.Field("backward_check_px", backward_check_px, "largest forward-backward distance [px]",
+            Bounds::Positive());
+    v.Field("ransac", ransac, "reject outliers with a RANSAC fundamental matrix on undistorted points");
+    v.Field("ransac_threshold_px", ransac_threshold_px, "RANSAC distance to the epipolar line [px]",
+            Bounds::Positive());
+    v.Field("ransac_confidence", ransac_confidence, "RANSAC confidence", Bounds{0.0, 1.0, true, true});
+    v.Field("clahe", clahe, "equalize each image with CLAHE before tracking");
+    v.Field("clahe_clip_limit", clahe_clip_limit, "CLAHE contrast limit", Bounds::Positive());
+    v.Field("clahe_tiles", clahe_tiles, "CLAHE tiles per image side", Bounds::AtLeast(1));
+    v.Field("max_rate_hz", max_rate_hz, "largest published frame rate [Hz] (0: every frame)",
+            Bounds::NonNegative());
+  }
+};
+
+}  // namespace vigil::frontend
