@@ -40,6 +40,8 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
 
 void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   sim::ValidateSimOptions(config.sim, origin);
+  if (const std::string why = frontend::ValidateEvaluationOptions(config.frontend.evaluation); !why.empty())
+    throw InputError(origin + ": frontend.evaluation." + why);
   try {
     detectors::ValidateDetectorOptions(config.detector);
   } catch (const InputError& e) {

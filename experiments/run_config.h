@@ -12,6 +12,7 @@
 #include "detectors/detector_options.h"
 #include "estimator/estimator_options.h"
 #include "experiments/evaluation_options.h"
+#include "frontend/frontend_options.h"
 #include "sim/sim_options.h"
 
 namespace vigil::experiments {
@@ -19,6 +20,7 @@ namespace vigil::experiments {
 struct RunConfig {
   uint64_t seed = 1;
   sim::SimOptions sim;
+  frontend::FrontendOptions frontend;
   detectors::DetectorOptions detector;
   estimator::EstimatorOptions estimator;
   EvaluationOptions evaluation;
@@ -27,6 +29,7 @@ struct RunConfig {
   void Visit(V& v) {
     v.Field("seed", seed, "run seed: every random stream derives from (seed, purpose)");
     sim.Visit(v);  // the simulator's sections sit at the top level
+    v.Section("frontend", frontend, "visual front-end: feature tracks from camera images");
     v.Section("detector", detector, "glitch detection and mitigation");
     v.Section("estimator", estimator, "sliding-window visual-inertial estimator");
     v.Section("evaluation", evaluation, "trajectory evaluation");

@@ -59,10 +59,15 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   if (clahe_)
     clahe_->apply(image, gray);
   else
-    gray = image.clone();
-
-  if (!previous_image_.empty() && !tracks_.empty()) TrackIntoImage(gray);
-  previous_image_ = gray;
+    gray = image;
+  // One pyramid (with its derivatives) per image, used to track into it and, next time, out of it.
+  std::vector<cv::Mat> pyramid;
+  const cv::Size window(options_.klt_window_px, options_.klt_window_px);
+  // (copied, never sharing the caller's pixels, which it may reuse for its next image)
+  cv::buildOpticalFlowPyramid(gray, pyramid, window, options_.klt_pyramid_levels, true, cv::BORDER_REFLECT_101,
+                              cv::BORDER_CONSTANT, false);
+  if (!previous_pyramid_.empty() && !tracks_.empty()) TrackIntoImage(pyramid);
+  previous_pyramid_ = std::move(pyramid);
   if (!ShouldPublish(t_ns)) return std::nullopt;
   last_published_t_ns_ = t_ns;
   ++stats_.published_frames;
@@ -87,7 +92,7 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   return frame;
 }
 
-void FeatureTracker::TrackIntoImage(const cv::Mat& image) {
+void FeatureTracker::TrackIntoImage(const std::vector<cv::Mat>& pyramid) {
   std::vector<cv::Point2f> before(tracks_.size()), after;
   for (std::size_t i = 0; i < tracks_.size(); ++i) before[i] = tracks_[i].raw_px;
   std::vector<uchar> status;
@@ -95,13 +100,13 @@ void FeatureTracker::TrackIntoImage(const cv::Mat& image) {
   const cv::Size window(options_.klt_window_px, options_.klt_window_px);
   const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options_.klt_max_iterations,
                                   options_.klt_epsilon_px);
-  cv::calcOpticalFlowPyrLK(previous_image_, image, before, after, status, error, window,
+  cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid, before, after, status, error, window,
                            options_.klt_pyramid_levels, criteria);
   std::vector<uchar> back_status;
   std::vector<cv::Point2f> back;
   if (options_.backward_check) {
     back = before;
-    cv::calcOpticalFlowPyrLK(image, previous_image_, after, back, back_status, error, window,
+    cv::calcOpticalFlowPyrLK(pyramid, previous_pyramid_, after, back, back_status, error, window,
                              options_.klt_pyramid_levels, criteria, cv::OPTFLOW_USE_INITIAL_FLOW);
   }
   std::size_t kept = 0;

@@ -70,7 +70,7 @@ class FeatureTracker {
   };
 
   bool ShouldPublish(int64_t t_ns) const;
-  void TrackIntoImage(const cv::Mat& image);
+  void TrackIntoImage(const std::vector<cv::Mat>& pyramid);
   void RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now);
   void EnforceSpacing();
   void DetectNewCorners(const cv::Mat& image);
@@ -81,7 +81,7 @@ class FeatureTracker {
   TrackerCamera camera_;
   PointUndistorter undistorter_;
   cv::Ptr<cv::CLAHE> clahe_;
-  cv::Mat previous_image_;
+  std::vector<cv::Mat> previous_pyramid_;  // of the previous image (cv::buildOpticalFlowPyramid)
   std::vector<TrackState> tracks_;
   int next_id_ = 0;
   std::optional<int64_t> last_t_ns_, last_published_t_ns_;

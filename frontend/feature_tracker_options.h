@@ -43,7 +43,7 @@ struct FeatureTrackerOptions {
             Bounds::NonNegative());
     v.Field("border_px", border_px, "tracks closer than this to the image border are dropped [px]",
             Bounds::NonNegative());
-    v.Field("klt_window_px", klt_window_px, "Lucas-Kanade window side [px] (odd)", Bounds::AtLeast(3));
+    v.Field("klt_window_px", klt_window_px, "Lucas-Kanade window side [px]", Bounds::AtLeast(3));
     v.Field("klt_pyramid_levels", klt_pyramid_levels, "Lucas-Kanade pyramid levels above the full image",
             Bounds::Closed(0, 8));
     v.Field("klt_max_iterations", klt_max_iterations, "Lucas-Kanade iterations per level",

@@ -1,0 +1,47 @@
+#include "experiments/frontend_metrics.h"
+
+#include "experiments/statistics.h"
+
+namespace vigil::experiments {
+
+nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const frontend::TrackerStats& stats,
+                                   const frontend::FrontendEvaluationOptions& options,
+                                   const std::optional<frontend::ReprojectionEvaluation>& reprojection) {
+  const std::vector<int> lengths = frontend::TrackLengths(frames);
+  const frontend::TrackLengthSummary summary = frontend::SummarizeTrackLengths(lengths, options.track_length_bins);
+  int64_t observations = 0;
+  for (const CameraFrame& frame : frames) observations += static_cast<int64_t>(frame.features.size());
+
+  nlohmann::json j;
+  j["features"] = "tracked";
+  j["images"] = stats.images;
+  j["published_frames"] = stats.published_frames;
+  j["tracks"] = summary.tracks;
+  j["observations"] = observations;
+  j["tracker"] = {{"klt_failures", stats.klt_failures},
+                  {"ransac_outliers", stats.ransac_outliers},
+                  {"spacing_drops", stats.spacing_drops},
+                  {"outside_undistorted", stats.outside_undistorted}};
+  nlohmann::json histogram = nlohmann::json::array();
+  for (const frontend::HistogramBin& bin : summary.histogram)
+    histogram.push_back({{"from", bin.from},
+                         {"to", bin.to < 0 ? nlohmann::json(nullptr) : nlohmann::json(bin.to)},
+                         {"count", bin.count}});
+  j["track_length_frames"] = {{"min", summary.min},
+                              {"median", summary.median},
+                              {"mean", summary.mean},
+                              {"max", summary.max},
+                              {"histogram", histogram}};
+  if (reprojection) {
+    j["reprojection"] = {{"error_px", StatisticsJson(ComputeStatistics(reprojection->errors_px))},
+                         {"evaluated", static_cast<int64_t>(reprojection->errors_px.size())},
+                         {"first_observations", reprojection->first_observations},
+                         {"without_truth", reprojection->without_truth},
+                         {"outlier_threshold_px", options.outlier_threshold_px},
+                         {"outliers", reprojection->outliers},
+                         {"outlier_ratio", reprojection->outlier_ratio}};
+  }
+  return j;
+}
+
+}  // namespace vigil::experiments
