@@ -11,6 +11,10 @@ std::string CameraModel::Validate() const {
     return "T_BC: rotation part is not a proper rotation (orthonormal, det +1)";
   if (T_BC[12] != 0.0 || T_BC[13] != 0.0 || T_BC[14] != 0.0 || T_BC[15] != 1.0)
     return "T_BC: last row must be 0 0 0 1";
+  if (distortion.size() != 4)
+    return "distortion: expected 4 numbers (k1, k2, p1, p2), got " + std::to_string(distortion.size());
+  for (double k : distortion)
+    if (!std::isfinite(k)) return "distortion: coefficients must be finite";
   return "";
 }
 
@@ -44,6 +48,49 @@ bool CameraModel::Project(const Eigen::Vector3d& p_C, Eigen::Vector2d* uv_px, do
 
 Eigen::Vector2d CameraModel::Normalize(const Eigen::Vector2d& uv_px) const {
   return Eigen::Vector2d((uv_px.x() - cx) / fx, (uv_px.y() - cy) / fy);
+}
+
+bool CameraModel::HasDistortion() const {
+  for (double k : distortion)
+    if (k != 0.0) return true;
+  return false;
+}
+
+Eigen::Vector2d CameraModel::Distort(const Eigen::Vector2d& xy) const {
+  if (!HasDistortion()) return xy;
+  const double k1 = distortion[0], k2 = distortion[1], p1 = distortion[2], p2 = distortion[3];
+  const double x = xy.x(), y = xy.y(), r2 = x * x + y * y;
+  const double radial = 1.0 + r2 * (k1 + k2 * r2);
+  return Eigen::Vector2d(x * radial + 2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
+                         y * radial + p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
+}
+
+Eigen::Vector2d CameraModel::Undistort(const Eigen::Vector2d& xy_distorted) const {
+  if (!HasDistortion()) return xy_distorted;
+  // x = (x_d - tangential(x)) / radial(x), iterated from x = x_d.
+  const double k1 = distortion[0], k2 = distortion[1], p1 = distortion[2], p2 = distortion[3];
+  Eigen::Vector2d xy = xy_distorted;
+  for (int i = 0; i < 100; ++i) {
+    const double x = xy.x(), y = xy.y(), r2 = x * x + y * y;
+    const double radial = 1.0 + r2 * (k1 + k2 * r2);
+    const Eigen::Vector2d tangential(2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x),
+                                     p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y);
+    const Eigen::Vector2d next = (xy_distorted - tangential) / radial;
+    const double step = (next - xy).norm();
+    xy = next;
+    if (step < 1e-12) break;
+  }
+  return xy;
+}
+
+Eigen::Vector2d CameraModel::DistortPixel(const Eigen::Vector2d& uv_px) const {
+  const Eigen::Vector2d xy = Distort(Normalize(uv_px));
+  return Eigen::Vector2d(fx * xy.x() + cx, fy * xy.y() + cy);
+}
+
+Eigen::Vector2d CameraModel::UndistortPixel(const Eigen::Vector2d& uv_image_px) const {
+  const Eigen::Vector2d xy = Undistort(Normalize(uv_image_px));
+  return Eigen::Vector2d(fx * xy.x() + cx, fy * xy.y() + cy);
 }
 
 }  // namespace vigil

@@ -149,14 +149,17 @@ void RejectDuplicateKeys(const YAML::Node& node, const std::string& path, const 
 
 YAML::Node LoadYamlFile(const std::string& path) {
   constexpr std::uintmax_t kMaxConfigBytes = 16 << 20;  // a config is a few kB
-  const std::string text = ReadFile(path, kMaxConfigBytes);
+  return LoadYamlText(ReadTextFile(path, kMaxConfigBytes));
+}
+
+YAML::Node LoadYamlText(const TextFile& file) {
   YAML::Node root;
   try {
-    root = YAML::Load(text);
+    root = YAML::Load(file.text);
   } catch (const YAML::ParserException& e) {
-    throw InputError(Located(path, e.mark.line + 1, "YAML syntax error: " + e.msg));
+    throw InputError(Located(file.path, e.mark.line + 1, "YAML syntax error: " + e.msg));
   }
-  RejectDuplicateKeys(root, path, "");
+  RejectDuplicateKeys(root, file.path, "");
   return root;
 }
 

@@ -29,6 +29,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/error.h"
+#include "core/output.h"
 
 namespace vigil::config {
 
@@ -184,6 +185,8 @@ class Reader {
 // Parses a YAML file into a node; InputError "file:line: reason" on a syntax error, "file: ..." if
 // unreadable.
 YAML::Node LoadYamlFile(const std::string& path);
+// The same on a file already in memory (errors name file.path).
+YAML::Node LoadYamlText(const TextFile& file);
 
 // The 1-based line of the key `key_path` ("imu.rate_hz") in a mapping loaded from a file; 0 when absent.
 int KeyLine(const YAML::Node& root, const std::string& key_path);

@@ -50,7 +50,7 @@ Rect Figure::CellRect(int width, int height, int row, int col, int row_span, int
   return {margin + col * cell_w, top + row * cell_h, col_span * cell_w, row_span * cell_h};
 }
 
-Image Figure::Render(GlContext* gl, TextRenderer* text, int width, int height) {
+Image Figure::Render(gl::GlContext* gl, TextRenderer* text, int width, int height) {
   const Style style = Style::ForSize(width, height);
   Painter painter(gl, text, width, height);
   if (!title_.empty()) {

@@ -7,7 +7,7 @@
 
 #include "plots/axes.h"
 #include "plots/axes3d.h"
-#include "plots/gl_context.h"
+#include "gl/gl_context.h"
 #include "plots/image.h"
 #include "plots/text.h"
 
@@ -25,7 +25,7 @@ class Figure {
   Panel& AddPanel(std::unique_ptr<Panel> panel, int row, int col, int row_span = 1, int col_span = 1);
 
   // Draws every panel into a width x height image.
-  Image Render(GlContext* gl, TextRenderer* text, int width, int height);
+  Image Render(gl::GlContext* gl, TextRenderer* text, int width, int height);
 
   // The pixel rectangle of a cell span in a width x height rendering.
   Rect CellRect(int width, int height, int row, int col, int row_span = 1, int col_span = 1) const;

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "core/format.h"
-#include "plots/gl_context.h"
+#include "gl/gl_context.h"
 #include "plots/heatmap_panel.h"
 #include "plots/image.h"
 #include "plots/text.h"
@@ -42,7 +42,7 @@ Figure GlitchMapFigure(const experiments::GlitchMap& map, const std::string& tit
 void WriteGlitchMapFigure(const experiments::GlitchMap& map, const std::string& title,
                           const std::filesystem::path& path, const FigureOptions& options) {
   ValidateFigureOptions(options);
-  GlContext gl;
+  gl::GlContext gl;
   TextRenderer text(options.font_file);
   WritePng(path, GlitchMapFigure(map, title).Render(&gl, &text, options.width, options.height));
 }

@@ -48,9 +48,9 @@ void EmitDisc(const Eigen::Vector2d& c, double radius) {
 
 }  // namespace
 
-Painter::Painter(GlContext* gl, TextRenderer* text, int width, int height)
+Painter::Painter(gl::GlContext* gl, TextRenderer* text, int width, int height)
     : gl_(gl), text_(text), width_(width), height_(height) {
-  gl_->BeginFrame(width, height, Color{1.0f, 1.0f, 1.0f, 1.0f});
+  gl_->BeginFrame(width, height, 1.0f, 1.0f, 1.0f);
   PixelProjection(width, height);
 }
 
@@ -190,7 +190,8 @@ void Painter::End3D() {
 }
 
 Image Painter::Finish() {
-  Image image = gl_->EndFrame();
+  Image image(width_, height_);
+  image.rgba = gl_->EndFrame();
   for (const QueuedText& t : texts_) {
     text_->Draw(&image, t.text, t.size_px, t.x, t.y, t.h, t.v, t.color, t.vertical);
   }

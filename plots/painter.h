@@ -1,9 +1,9 @@
 // Drawing primitives of a figure in pixel coordinates (origin at the top-left corner, y down).
 //
-// Shapes go to OpenGL (anti-aliased by the multisampled framebuffer of GlContext); text is queued and drawn
-// with FreeType over the read-back image by Finish(), so text is always on top. A clip rectangle (scissor)
-// limits shapes to a plot area. Begin3D/End3D switch to a perspective view with depth testing inside a
-// rectangle.
+// Shapes go to OpenGL (anti-aliased by the multisampled framebuffer of gl::GlContext); text is queued and
+// drawn with FreeType over the read-back image by Finish(), so text is always on top. A clip rectangle
+// (scissor) limits shapes to a plot area. Begin3D/End3D switch to a perspective view with depth testing
+// inside a rectangle.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "plots/gl_context.h"
+#include "gl/gl_context.h"
 #include "plots/image.h"
 #include "plots/text.h"
 
@@ -28,7 +28,7 @@ struct Rect {
 class Painter {
  public:
   // Starts a width x height frame on `gl` cleared to white.
-  Painter(GlContext* gl, TextRenderer* text, int width, int height);
+  Painter(gl::GlContext* gl, TextRenderer* text, int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -72,7 +72,7 @@ class Painter {
     bool vertical;
   };
 
-  GlContext* gl_;
+  gl::GlContext* gl_;
   TextRenderer* text_;
   int width_, height_;
   std::vector<QueuedText> texts_;

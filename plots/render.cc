@@ -11,7 +11,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "plots/figure_data.h"
-#include "plots/gl_context.h"
+#include "gl/gl_context.h"
 
 namespace vigil::plots {
 namespace {
@@ -45,7 +45,7 @@ class FigureWriter {
  private:
   fs::path out_dir_;
   FigureOptions options_;
-  GlContext gl_;
+  gl::GlContext gl_;
   TextRenderer text_;
   std::vector<fs::path> written_;
 };

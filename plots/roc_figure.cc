@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "plots/figures.h"
-#include "plots/gl_context.h"
+#include "gl/gl_context.h"
 #include "plots/image.h"
 #include "plots/text.h"
 
@@ -39,7 +39,7 @@ Figure RocFigure(const std::vector<experiments::RocCurve>& curves, const std::st
 void WriteRocFigure(const std::vector<experiments::RocCurve>& curves, const std::string& title,
                     const std::filesystem::path& path, const FigureOptions& options) {
   ValidateFigureOptions(options);
-  GlContext gl;
+  gl::GlContext gl;
   TextRenderer text(options.font_file);
   WritePng(path, RocFigure(curves, title).Render(&gl, &text, options.width, options.height));
 }

@@ -1,5 +1,8 @@
 #include "core/camera.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace vigil {
@@ -33,6 +36,69 @@ TEST(Camera, RejectsImproperRotation) {
   EXPECT_NE(cam.Validate().find("proper rotation"), std::string::npos);
   cam.T_BC.resize(15);
   EXPECT_NE(cam.Validate().find("16 numbers"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vigil
+
+namespace vigil {
+namespace {
+
+CameraModel EurocCam0() {
+  CameraModel cam;
+  cam.width = 752;
+  cam.height = 480;
+  cam.fx = 458.654;
+  cam.fy = 457.296;
+  cam.cx = 367.215;
+  cam.cy = 248.375;
+  cam.distortion = {-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05};
+  return cam;
+}
+
+TEST(CameraDistortion, NoneByDefaultLeavesPixelsUnchanged) {
+  const CameraModel cam;
+  EXPECT_FALSE(cam.HasDistortion());
+  const Eigen::Vector2d uv(12.5, 600.25);
+  EXPECT_EQ(cam.DistortPixel(uv), uv);
+  EXPECT_EQ(cam.UndistortPixel(uv), uv);
+}
+
+TEST(CameraDistortion, MatchesTheRadialTangentialFormula) {
+  const CameraModel cam = EurocCam0();
+  const double x = 0.3, y = -0.2, r2 = x * x + y * y;
+  const double k1 = cam.distortion[0], k2 = cam.distortion[1], p1 = cam.distortion[2], p2 = cam.distortion[3];
+  const Eigen::Vector2d d = cam.Distort(Eigen::Vector2d(x, y));
+  EXPECT_NEAR(d.x(), x * (1 + k1 * r2 + k2 * r2 * r2) + 2 * p1 * x * y + p2 * (r2 + 2 * x * x), 1e-15);
+  EXPECT_NEAR(d.y(), y * (1 + k1 * r2 + k2 * r2 * r2) + p1 * (r2 + 2 * y * y) + 2 * p2 * x * y, 1e-15);
+  // Barrel distortion (k1 < 0) pulls points towards the centre.
+  EXPECT_LT(d.norm(), Eigen::Vector2d(x, y).norm());
+}
+
+TEST(CameraDistortion, UndistortInvertsDistortOverTheEurocImage) {
+  const CameraModel cam = EurocCam0();
+  double worst_px = 0.0;
+  for (int v = 0; v <= cam.height; v += 40) {
+    for (int u = 0; u <= cam.width; u += 47) {
+      const Eigen::Vector2d image(u, v);
+      const Eigen::Vector2d pinhole = cam.UndistortPixel(image);
+      worst_px = std::max(worst_px, (cam.DistortPixel(pinhole) - image).norm());
+      // Away from the centre the pinhole pixel lies further out than the image pixel (barrel).
+      if ((image - Eigen::Vector2d(cam.cx, cam.cy)).norm() > 100) {
+        EXPECT_GT((pinhole - Eigen::Vector2d(cam.cx, cam.cy)).norm(),
+                  (image - Eigen::Vector2d(cam.cx, cam.cy)).norm());
+      }
+    }
+  }
+  EXPECT_LT(worst_px, 1e-6);
+}
+
+TEST(CameraDistortion, ValidateNeedsFourFiniteCoefficients) {
+  CameraModel cam;
+  cam.distortion = {0.1, 0.2};
+  EXPECT_NE(cam.Validate().find("distortion"), std::string::npos);
+  cam.distortion = {0.1, 0.2, 0.0, std::nan("")};
+  EXPECT_NE(cam.Validate().find("finite"), std::string::npos);
 }
 
 }  // namespace

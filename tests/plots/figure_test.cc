@@ -13,7 +13,7 @@ namespace {
 
 class FigureTest : public ::testing::Test {
  protected:
-  GlContext gl_;
+  gl::GlContext gl_;
   TextRenderer text_;
 };
 

@@ -10,7 +10,7 @@ namespace {
 
 class FiguresTest : public ::testing::Test {
  protected:
-  GlContext gl_;
+  gl::GlContext gl_;
   TextRenderer text_;
 };
 

@@ -1,0 +1,329 @@
+#include "core/euroc.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/config.h"
+#include "core/csv.h"
+#include "core/error.h"
+#include "core/format.h"
+
+namespace vigil {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr std::uintmax_t kMaxSensorYamlBytes = 1 << 20;  // a sensor.yaml is a few hundred bytes
+
+// OpenCV writes "%YAML:1.0" as its first line, which yaml-cpp rejects: it becomes a comment (lines keep
+// their numbers).
+TextFile WithoutOpenCvDirective(TextFile file) {
+  if (file.text.rfind("%YAML", 0) == 0) file.text[0] = '#';
+  return file;
+}
+
+// A parsed sensor.yaml and the errors it gives.
+class SensorYaml {
+ public:
+  explicit SensorYaml(const TextFile& file) : path_(file.path), root_(config::LoadYamlText(WithoutOpenCvDirective(file))) {
+    if (!root_.IsMap()) throw InputError(Located(path_, 1, "expected a mapping of keys (EuRoC sensor.yaml)"));
+  }
+
+  bool Has(const std::string& key) const { return static_cast<bool>(root_[key]); }
+
+  [[noreturn]] void Fail(const std::string& key, const std::string& reason) const {
+    throw InputError(Located(path_, config::KeyLine(root_, key), key + ": " + reason));
+  }
+
+  YAML::Node Required(const std::string& key, const std::string& what) const {
+    const YAML::Node node = root_[key];
+    if (!node) Fail(key, "missing (" + what + ")");
+    return node;
+  }
+
+  double Number(const std::string& key, const YAML::Node& node) const {
+    double v = 0.0;
+    if (!node.IsScalar() || !ParseDouble(node.Scalar(), &v)) Fail(key, "expected a finite number");
+    return v;
+  }
+
+  double Number(const std::string& key, const std::string& what) const {
+    return Number(key, Required(key, what));
+  }
+
+  std::vector<double> Numbers(const std::string& key, const YAML::Node& node, std::size_t n) const {
+    if (!node.IsSequence() || node.size() != n) Fail(key, "expected a list of " + std::to_string(n) + " numbers");
+    std::vector<double> v;
+    for (const YAML::Node& e : node) v.push_back(Number(key, e));
+    return v;
+  }
+
+  std::string Text(const std::string& key) const {
+    const YAML::Node node = root_[key];
+    if (!node) return "";
+    if (!node.IsScalar()) Fail(key, "expected a text");
+    return node.Scalar();
+  }
+
+  // T_BS: {cols: 4, rows: 4, data: [16 numbers]}, a rigid transform.
+  Eigen::Isometry3d Transform(const std::string& key) const {
+    const YAML::Node node = Required(key, "the sensor's pose in the body frame, {cols: 4, rows: 4, data: [16]}");
+    if (!node.IsMap() || !node["data"]) Fail(key, "expected {cols: 4, rows: 4, data: [16 numbers]}");
+    if (node["rows"] && Number(key, node["rows"]) != 4) Fail(key, "rows: expected 4");
+    if (node["cols"] && Number(key, node["cols"]) != 4) Fail(key, "cols: expected 4");
+    CameraModel check;
+    check.T_BC = Numbers(key, node["data"], 16);
+    const std::string why = check.Validate();
+    if (!why.empty()) Fail(key, why.substr(why.find(':') + 2));
+    return check.T_BC_iso();
+  }
+
+ private:
+  std::string path_;
+  YAML::Node root_;
+};
+
+std::string MatrixYaml(const Eigen::Isometry3d& T) {
+  std::string s = "T_BS:\n  cols: 4\n  rows: 4\n  data: [";
+  const Eigen::Matrix4d m = T.matrix();
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      s += FormatDouble(m(r, c));
+      if (r < 3 || c < 3) s += ", ";
+    }
+    if (r < 3) s += "\n         ";
+  }
+  return s + "]\n";
+}
+
+std::string ListYaml(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + FormatDouble(v[i]);
+  return s + "]";
+}
+
+bool IsFile(const fs::path& path) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+
+}  // namespace
+
+std::string EurocImuSensorYaml(const EurocImuSensor& s) {
+  return "%YAML:1.0\n"
+         "# Default imu sensor yaml file (EuRoC layout, written by vigil)\n"
+         "sensor_type: imu\n"
+         "comment: vigil simulated IMU\n\n"
+         "# Sensor extrinsics wrt. the body-frame.\n" +
+         MatrixYaml(s.T_BS) + "rate_hz: " + FormatDouble(s.rate_hz) +
+         "\n\n# inertial sensor noise model parameters (static)\n"
+         "gyroscope_noise_density: " + FormatDouble(s.gyroscope_noise_density) +
+         "     # [ rad / s / sqrt(Hz) ]   ( gyro \"white noise\" )\n"
+         "gyroscope_random_walk: " + FormatDouble(s.gyroscope_random_walk) +
+         "       # [ rad / s^2 / sqrt(Hz) ] ( gyro bias diffusion )\n"
+         "accelerometer_noise_density: " + FormatDouble(s.accelerometer_noise_density) +
+         "  # [ m / s^2 / sqrt(Hz) ]   ( accel \"white noise\" )\n"
+         "accelerometer_random_walk: " + FormatDouble(s.accelerometer_random_walk) +
+         "    # [ m / s^3 / sqrt(Hz) ]   ( accel bias diffusion )\n";
+}
+
+std::string EurocCameraSensorYaml(const CameraModel& c) {
+  return "%YAML:1.0\n"
+         "# General sensor definitions.\n"
+         "sensor_type: camera\n"
+         "comment: vigil rendered camera\n\n"
+         "# Sensor extrinsics wrt. the body-frame.\n" +
+         MatrixYaml(c.T_BC_iso()) +
+         "\n# Camera specific definitions.\n"
+         "rate_hz: " + FormatDouble(c.rate_hz) + "\nresolution: [" + std::to_string(c.width) + ", " +
+         std::to_string(c.height) + "]\ncamera_model: pinhole\nintrinsics: " +
+         ListYaml({c.fx, c.fy, c.cx, c.cy}) + " #fu, fv, cu, cv\ndistortion_model: radial-tangential\n" +
+         "distortion_coefficients: " + ListYaml(c.distortion) + "\n";
+}
+
+std::string EurocImageName(int64_t t_ns) { return std::to_string(t_ns) + ".png"; }
+
+std::string EurocImageListCsv(const std::vector<int64_t>& times_ns) {
+  CsvWriter w("timestamp [ns],filename");
+  for (int64_t t : times_ns) {
+    w << t << EurocImageName(t);
+    w.EndRow();
+  }
+  return w.Str();
+}
+
+EurocImuSensor ReadEurocImuSensorYaml(const TextFile& file) {
+  const SensorYaml y(file);
+  EurocImuSensor s;
+  s.T_BS = y.Transform("T_BS");
+  s.rate_hz = y.Number("rate_hz", "the IMU rate [Hz]");
+  if (!(s.rate_hz > 0.0)) y.Fail("rate_hz", "must be positive");
+  const auto density = [&](const char* key) {
+    const double v = y.Number(key, "IMU noise model");
+    if (v < 0.0) y.Fail(key, "must not be negative");
+    return v;
+  };
+  s.gyroscope_noise_density = density("gyroscope_noise_density");
+  s.gyroscope_random_walk = density("gyroscope_random_walk");
+  s.accelerometer_noise_density = density("accelerometer_noise_density");
+  s.accelerometer_random_walk = density("accelerometer_random_walk");
+  return s;
+}
+
+CameraModel ReadEurocCameraSensorYaml(const TextFile& file) {
+  const SensorYaml y(file);
+  CameraModel c;
+  const Eigen::Isometry3d T_BS = y.Transform("T_BS");
+  c.T_BC.assign(16, 0.0);
+  for (int r = 0; r < 4; ++r)
+    for (int col = 0; col < 4; ++col) c.T_BC[4 * r + col] = T_BS.matrix()(r, col);
+  c.rate_hz = y.Number("rate_hz", "the camera rate [Hz]");
+  if (!(c.rate_hz > 0.0)) y.Fail("rate_hz", "must be positive");
+  const std::vector<double> res = y.Numbers("resolution", y.Required("resolution", "[width, height]"), 2);
+  for (double v : res)
+    if (v < 1.0 || v > 100000.0 || v != std::floor(v))
+      y.Fail("resolution", "expected two integers in 1 .. 100000 [px]");
+  c.width = static_cast<int>(res[0]);
+  c.height = static_cast<int>(res[1]);
+  const std::string model = y.Text("camera_model");
+  if (!model.empty() && model != "pinhole")
+    y.Fail("camera_model", "'" + model + "' is not supported (vigil reads pinhole cameras)");
+  const std::vector<double> k =
+      y.Numbers("intrinsics", y.Required("intrinsics", "a pinhole camera needs [fu, fv, cu, cv]"), 4);
+  if (!(k[0] > 0.0) || !(k[1] > 0.0)) y.Fail("intrinsics", "focal lengths fu, fv must be positive");
+  c.fx = k[0];
+  c.fy = k[1];
+  c.cx = k[2];
+  c.cy = k[3];
+  const std::string distortion = y.Text("distortion_model");
+  if (!distortion.empty() && distortion != "radial-tangential" && distortion != "radtan" &&
+      distortion != "none")
+    y.Fail("distortion_model", "'" + distortion + "' is not supported (radial-tangential or none)");
+  if (y.Has("distortion_coefficients") && distortion != "none")
+    c.distortion = y.Numbers("distortion_coefficients", y.Required("distortion_coefficients", ""), 4);
+  return c;
+}
+
+std::vector<CameraImage> ReadEurocImageList(const TextFile& file, const fs::path& image_dir,
+                                            bool check_files) {
+  CsvReader r(file, 2, "EuRoC cam0 layout: timestamp [ns], filename");
+  std::vector<CameraImage> images;
+  int64_t last = INT64_MIN;
+  while (r.Next()) {
+    CameraImage image;
+    image.t_ns = r.Int(0);
+    if (last != INT64_MIN && image.t_ns <= last)
+      r.Fail("timestamp " + std::to_string(image.t_ns) + " does not increase (previous " + std::to_string(last) +
+             ")");
+    last = image.t_ns;
+    const std::string name(r.Text(1));
+    if (name.empty()) r.Fail("filename: missing (expected the image file name, e.g. " +
+                             EurocImageName(image.t_ns) + ")");
+    image.path = fs::absolute(image_dir / name).lexically_normal().string();
+    image.list_path = r.path();
+    image.list_line = r.line();
+    if (check_files) {
+      std::error_code ec;
+      if (!fs::is_regular_file(image.path, ec)) r.Fail(image.path + ": image file is missing");
+    }
+    images.push_back(std::move(image));
+  }
+  if (images.empty()) r.Fail("no data rows (no images)");
+  return images;
+}
+
+void CheckImageSize(const CameraImage& image, int width, int height, const CameraModel& camera) {
+  if (width == camera.width && height == camera.height) return;
+  throw InputError(Located(image.list_path, image.list_line,
+                           image.path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
+                               ", the camera's sensor.yaml declares " + std::to_string(camera.width) + " x " +
+                               std::to_string(camera.height)));
+}
+
+fs::path FindMav0(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path clean = fs::absolute(dir).lexically_normal();
+  const fs::path name = clean.has_filename() ? clean.filename() : clean.parent_path().filename();
+  if (name == euroc_files::kMav0 || fs::is_directory(dir / euroc_files::kImu, ec)) return dir;
+  if (fs::is_directory(dir / euroc_files::kMav0, ec)) return dir / euroc_files::kMav0;
+  return {};
+}
+
+fs::path EurocImageDir(const fs::path& dir) {
+  return dir / euroc_files::kMav0 / euroc_files::kCamera / euroc_files::kImages;
+}
+
+Recording ReadRecording(const fs::path& dir) {
+  using namespace euroc_files;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(dir.string() + ": not a dataset directory");
+  Recording rec;
+  if (IsFile(dir / dataset_files::kImu)) {
+    rec.layout = "vigil";
+    rec.dataset = ReadDataset(dir);
+    rec.has_camera = rec.has_features = rec.has_groundtruth = true;
+    const fs::path list = dir / kMav0 / kCamera / kData;
+    if (IsFile(list)) rec.images = ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages);
+    return rec;
+  }
+  const fs::path mav0 = FindMav0(dir);
+  if (mav0.empty())
+    throw InputError(dir.string() +
+                     ": not a dataset directory (expected imu.csv of vigil's layout, or a EuRoC mav0/ folder)");
+  rec.layout = "euroc";
+  Dataset& d = rec.dataset;
+  const fs::path imu_dir = mav0 / kImu;
+  d.imu = ReadImuCsv((imu_dir / kData).string());
+  if (IsFile(imu_dir / kSensor))
+    rec.imu_sensor = ReadEurocImuSensorYaml(ReadTextFile((imu_dir / kSensor).string(), kMaxSensorYamlBytes));
+  const fs::path cam_dir = mav0 / kCamera;
+  if (fs::is_directory(cam_dir, ec)) {
+    d.camera = ReadEurocCameraSensorYaml(ReadTextFile((cam_dir / kSensor).string(), kMaxSensorYamlBytes));
+    // vigil's body is the IMU: T_BC = T_BS(imu0)^-1 T_BS(cam0).
+    const Eigen::Isometry3d T_IC = rec.imu_sensor.T_BS.inverse() * d.camera.T_BC_iso();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) d.camera.T_BC[4 * r + c] = T_IC.matrix()(r, c);
+    rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages);
+    rec.has_camera = true;
+  }
+  const fs::path gt = mav0 / kGroundTruth / kData;
+  if (IsFile(gt)) {
+    d.groundtruth = ReadGroundTruthCsv(gt.string());
+    rec.has_groundtruth = true;
+  }
+  // Feature tracks beside mav0/ (e.g. written there by `vigil track`), at the image times.
+  const fs::path root = mav0 == dir && fs::absolute(dir).lexically_normal().filename() == kMav0
+                            ? fs::absolute(dir).lexically_normal().parent_path()
+                            : dir;
+  std::vector<int64_t> frame_times;
+  for (const CameraImage& image : rec.images) frame_times.push_back(image.t_ns);
+  const fs::path features = root / dataset_files::kFeatures;
+  if (rec.has_camera && IsFile(features)) {
+    FeatureChecks checks;
+    checks.camera = &d.camera;
+    d.frames = ReadFeaturesCsv(features.string(), frame_times, &checks);
+    rec.has_features = true;
+  } else {
+    for (int64_t t : frame_times) d.frames.push_back({t, {}});
+  }
+  return rec;
+}
+
+void WriteEuroc(const fs::path& dir, const Dataset& dataset, const EurocImuSensor& imu_sensor,
+                const std::vector<int64_t>& image_times_ns) {
+  using namespace euroc_files;
+  const fs::path mav0 = dir / kMav0;
+  fs::create_directories(mav0 / kImu);
+  fs::create_directories(EurocImageDir(dir));
+  WriteFileAtomic(mav0 / kImu / kData, ImuCsv(dataset.imu));
+  WriteFileAtomic(mav0 / kImu / kSensor, EurocImuSensorYaml(imu_sensor));
+  WriteFileAtomic(mav0 / kCamera / kData, EurocImageListCsv(image_times_ns));
+  WriteFileAtomic(mav0 / kCamera / kSensor, EurocCameraSensorYaml(dataset.camera));
+  if (!dataset.groundtruth.empty()) {
+    fs::create_directories(mav0 / kGroundTruth);
+    WriteFileAtomic(mav0 / kGroundTruth / kData, GroundTruthCsv(dataset.groundtruth));
+  }
+}
+
+}  // namespace vigil
