@@ -1,5 +1,6 @@
 #include "experiments/frontend_stage.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -18,6 +19,8 @@ frontend::TrackerCamera TrackerCameraOf(const CameraModel& camera) {
   c.fy = camera.fy;
   c.cx = camera.cx;
   c.cy = camera.cy;
+  if (camera.distortion.size() == c.distortion.size())
+    std::copy(camera.distortion.begin(), camera.distortion.end(), c.distortion.begin());
   return c;
 }
 
@@ -49,18 +52,19 @@ TrackedFeatures TrackImages(std::size_t count,
   return out;
 }
 
-TrackedFeatures TrackImageFiles(const std::vector<ImageFile>& images, const CameraModel& camera,
+TrackedFeatures TrackImageFiles(const std::vector<CameraImage>& images, const CameraModel& camera,
                                 const frontend::FeatureTrackerOptions& options) {
   const auto describe = [&](std::size_t i) {
-    const ImageFile& f = images[i];
-    return f.listed_in.empty() ? f.path.string() : Located(f.listed_in, f.line, f.path.string());
+    const CameraImage& f = images[i];
+    return f.list_path.empty() ? f.path : Located(f.list_path, f.list_line, f.path);
   };
   const auto load = [&](std::size_t i) -> std::pair<int64_t, cv::Mat> {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(images[i].path, ec))
       throw InputError(describe(i) + ": no such image file");
-    cv::Mat image = cv::imread(images[i].path.string(), cv::IMREAD_GRAYSCALE);
+    cv::Mat image = cv::imread(images[i].path, cv::IMREAD_GRAYSCALE);
     if (image.empty()) throw InputError(describe(i) + ": cannot read the image");
+    CheckImageSize(images[i], image.cols, image.rows, camera);
     return {images[i].t_ns, image};
   };
   return TrackImages(images.size(), load, describe, camera, options);

@@ -12,20 +12,13 @@
 #include <opencv2/core.hpp>
 
 #include "core/camera.h"
+#include "core/euroc.h"
 #include "core/types.h"
 #include "frontend/feature_tracker.h"
 #include "frontend/frontend_options.h"
 #include "frontend/track_truth.h"
 
 namespace vigil::experiments {
-
-// One camera image on disk and where it was listed (a EuRoC cam0/data.csv row), for error messages.
-struct ImageFile {
-  int64_t t_ns = 0;
-  std::filesystem::path path;
-  std::string listed_in;  // the list file (empty: none)
-  int line = 0;           // its 1-based line
-};
 
 struct TrackedFeatures {
   std::vector<CameraFrame> frames;  // the published frames, in time order
@@ -42,9 +35,9 @@ TrackedFeatures TrackImages(std::size_t count, const std::function<std::pair<int
                             const std::function<std::string(std::size_t)>& describe, const CameraModel& camera,
                             const frontend::FeatureTrackerOptions& options);
 
-// Reads and tracks image files (any format OpenCV reads, converted to 8-bit grayscale). A missing or
-// unreadable file or one of another size than the camera's: InputError "LIST:LINE: PATH: reason".
-TrackedFeatures TrackImageFiles(const std::vector<ImageFile>& images, const CameraModel& camera,
+// Reads and tracks image files (cam0/data.csv rows; any format OpenCV reads, converted to 8-bit grayscale).
+// A missing or unreadable file or one of another size than the camera's: InputError "LIST:LINE: PATH: reason".
+TrackedFeatures TrackImageFiles(const std::vector<CameraImage>& images, const CameraModel& camera,
                                 const frontend::FeatureTrackerOptions& options);
 
 // The reprojection evaluation of `frames` against the true body poses `groundtruth` (interpolated at each

@@ -26,16 +26,16 @@ CameraModel Camera(int width, int height) {
 }
 
 // Writes `count` shifted views of a texture as PNG files and lists them.
-std::vector<ImageFile> WriteImages(const TempDir& dir, int count, cv::Size size) {
+std::vector<CameraImage> WriteImages(const TempDir& dir, int count, cv::Size size) {
   const cv::Mat texture = frontend::testing::MakeTexture(size.width + 10 * count, size.height, 4);
-  std::vector<ImageFile> files;
+  std::vector<CameraImage> files;
   for (int k = 0; k < count; ++k) {
-    ImageFile f;
+    CameraImage f;
     f.t_ns = 1'000'000'000LL + k * 50'000'000LL;
-    f.path = dir.path() / (std::to_string(f.t_ns) + ".png");
-    f.listed_in = (dir.path() / "data.csv").string();
-    f.line = k + 2;
-    cv::imwrite(f.path.string(), texture(cv::Rect(10 * (count - k), 0, size.width, size.height)));
+    f.path = (dir.path() / (std::to_string(f.t_ns) + ".png")).string();
+    f.list_path = (dir.path() / "data.csv").string();
+    f.list_line = k + 2;
+    cv::imwrite(f.path, texture(cv::Rect(10 * (count - k), 0, size.width, size.height)));
     files.push_back(f);
   }
   return files;
@@ -43,7 +43,7 @@ std::vector<ImageFile> WriteImages(const TempDir& dir, int count, cv::Size size)
 
 TEST(FrontendStage, TracksImageFiles) {
   const TempDir dir;
-  const std::vector<ImageFile> files = WriteImages(dir, 5, {320, 240});
+  const std::vector<CameraImage> files = WriteImages(dir, 5, {320, 240});
   const TrackedFeatures tracked = TrackImageFiles(files, Camera(320, 240), frontend::FeatureTrackerOptions{});
   ASSERT_EQ(tracked.frames.size(), 5u);
   EXPECT_EQ(tracked.frames[3].t_ns, files[3].t_ns);
@@ -53,23 +53,23 @@ TEST(FrontendStage, TracksImageFiles) {
 
 TEST(FrontendStage, BadImagesNameTheFileAndLine) {
   const TempDir dir;
-  std::vector<ImageFile> files = WriteImages(dir, 3, {320, 240});
+  std::vector<CameraImage> files = WriteImages(dir, 3, {320, 240});
   const CameraModel camera = Camera(320, 240);
   const frontend::FeatureTrackerOptions options;
 
-  std::vector<ImageFile> missing = files;
-  missing[1].path = dir.path() / "nope.png";
+  std::vector<CameraImage> missing = files;
+  missing[1].path = (dir.path() / "nope.png").string();
   EXPECT_EQ(InputErrorOf([&] { TrackImageFiles(missing, camera, options); }),
-            files[1].listed_in + ":3: " + missing[1].path.string() + ": no such image file");
+            files[1].list_path + ":3: " + missing[1].path + ": no such image file");
 
-  std::vector<ImageFile> garbage = files;
+  std::vector<CameraImage> garbage = files;
   garbage[2].path = dir.File("bad.png", "not a png");
   EXPECT_EQ(InputErrorOf([&] { TrackImageFiles(garbage, camera, options); }),
-            files[2].listed_in + ":4: " + garbage[2].path.string() + ": cannot read the image");
+            files[2].list_path + ":4: " + garbage[2].path + ": cannot read the image");
 
   EXPECT_EQ(InputErrorOf([&] { TrackImageFiles(files, Camera(640, 240), options); }),
-            files[0].listed_in + ":2: " + files[0].path.string() +
-                ": image of 320 x 240 px, the camera's is 640 x 240");
+            files[0].list_path + ":2: " + files[0].path +
+                ": image is 320 x 240, the camera's sensor.yaml declares 640 x 240");
 }
 
 // A camera 4 m above the ground plane z = 0 looking down and moving along x: the tracker's tracks are
