@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddTrackCommand(root);
   AddRunCommand(root);
   AddEvalCommand(root);
   AddPlotCommand(root);
