@@ -36,15 +36,16 @@ void CheckSameSamples(const ImuStream& imu, const ImuStream& clean, const std::s
 void AddCleanCommand(CLI::App& root) {
   auto* cmd =
       root.add_subcommand("clean",
-                          "run a glitch detector + mitigation on DATASET/imu.csv (or an imu0 CSV path); "
-                          "writes DIR/imu.csv, DIR/detections.csv, DIR/detection.json, DIR/config.yaml");
+                          "run a glitch detector + mitigation on DATASET/imu.csv (or DATASET/mav0/imu0/data.csv, "
+                          "or an imu0 CSV path); writes DIR/imu.csv, DIR/detections.csv, DIR/detection.json, DIR/config.yaml");
   struct Args {
     std::string dataset, output, detector, templates;
     DetectorArgs overrides;
     bool force = false;
   };
   auto args = std::make_shared<Args>();
-  cmd->add_option("DATASET", args->dataset, "dataset directory or EuRoC imu0 CSV file")->required();
+  cmd->add_option("DATASET", args->dataset, "dataset directory (vigil or EuRoC) or EuRoC imu0 CSV file")
+      ->required();
   cmd->add_option("-o,--output", args->output,
                   "output directory (must not exist or be empty, unless --force)")
       ->required();

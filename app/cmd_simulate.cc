@@ -14,20 +14,24 @@ namespace vigil::app {
 void AddSimulateCommand(CLI::App& root) {
   auto* cmd = root.add_subcommand("simulate",
                                   "simulate IMU, ground truth, glitches and feature tracks into a dataset "
-                                  "directory");
+                                  "directory (--images: also rendered camera images in the EuRoC layout "
+                                  "mav0/ and scene.obj)");
   struct Args {
     ConfigArgs config;
     std::string output;
-    bool force = false;
+    bool force = false, images = false;
   };
   auto args = std::make_shared<Args>();
   args->config.AddTo(cmd);
   cmd->add_option("-o,--output", args->output, "dataset directory to write")->required();
+  cmd->add_flag("--images", args->images,
+                "render camera images (same as --set images.enabled=true): mav0/ (EuRoC layout) and scene.obj");
   cmd->add_flag("--force", args->force,
                 "replace an output directory vigil wrote (files it did not write are kept)");
   SetAction(cmd, [args] {
-    experiments::RunConfig config =
-        experiments::LoadRunConfig(args->config.config_path, args->config.AllOverrides());
+    std::vector<std::string> overrides = args->config.AllOverrides();
+    if (args->images) overrides.emplace_back("images.enabled=true");
+    experiments::RunConfig config = experiments::LoadRunConfig(args->config.config_path, overrides);
     std::vector<std::filesystem::path> inputs = experiments::RunConfigInputs(config);
     inputs.emplace_back(args->config.config_path);
     RefuseOutputOverInputs(args->output, inputs);
@@ -47,6 +51,9 @@ void AddSimulateCommand(CLI::App& root) {
         d.imu.size(), d.glitches.size(), d.landmarks.size(), d.frames.size(), fewest,
         d.frames.empty() ? 0.0 : static_cast<double>(observations) / static_cast<double>(d.frames.size()),
         args->output.c_str(), seconds);
+    if (config.sim.images.enabled)
+      std::fprintf(stderr, "vigil simulate: %zu images %d x %d in %s/mav0/cam0/data, scene.obj\n", d.frames.size(),
+                   config.sim.camera.width, config.sim.camera.height, args->output.c_str());
     return 0;
   });
 }

@@ -2,6 +2,7 @@
 
 #include "core/config.h"
 #include "core/error.h"
+#include "core/euroc.h"
 
 namespace vigil::app {
 namespace {
@@ -40,8 +41,13 @@ ImuInput ResolveImuInput(const std::string& dataset, const std::string& file_in_
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     const fs::path file = path / file_in_dir;
-    if (!fs::exists(file, ec)) throw InputError(file.string() + ": not found (expected a dataset directory)");
-    return {file, path};
+    if (fs::exists(file, ec)) return {file, path};
+    // A EuRoC folder (the one holding mav0/, or mav0/ itself): its imu0/data.csv.
+    const fs::path mav0 = FindMav0(path);
+    const fs::path euroc_imu = mav0 / euroc_files::kImu / euroc_files::kData;
+    if (!mav0.empty() && fs::exists(euroc_imu, ec)) return {euroc_imu, euroc_imu.parent_path()};
+    throw InputError(file.string() + ": not found (expected a dataset directory: vigil's, or a EuRoC folder with "
+                     "mav0/imu0/data.csv)");
   }
   if (!fs::exists(path, ec)) throw InputError(dataset + ": no such file or directory");
   return {path, path.parent_path().empty() ? fs::path(".") : path.parent_path()};

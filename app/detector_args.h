@@ -24,12 +24,14 @@ struct DetectorArgs {
 // The detector options under their config key ("detector:"), e.g. for a config.yaml beside results.
 std::string DetectorConfigYaml(const detectors::DetectorOptions& options);
 
-// DATASET of `vigil templates` / `vigil clean`: a dataset directory or the path of an EuRoC imu0 CSV file.
+// DATASET of `vigil templates` / `vigil clean`: a dataset directory (vigil's, or a EuRoC folder) or the
+// path of an EuRoC imu0 CSV file.
 struct ImuInput {
   std::filesystem::path imu;  // the CSV to read
   std::filesystem::path dir;  // where imu_clean.csv and glitches.csv may sit beside it
 };
-// For a directory: `file_in_dir` inside it (InputError if missing). For a file: the file itself.
+// For a directory: `file_in_dir` inside it, else a EuRoC folder's mav0/imu0/data.csv (InputError if neither).
+// For a file: the file itself.
 ImuInput ResolveImuInput(const std::string& dataset, const std::string& file_in_dir);
 
 }  // namespace vigil::app

@@ -7,6 +7,7 @@
 
 #include "core/dataset.h"
 #include "core/error.h"
+#include "core/euroc.h"
 #include "core/output.h"
 #include "estimator/run_estimator.h"
 #include "experiments/detection_stage.h"
@@ -30,6 +31,7 @@ struct RunData {
   Dataset dataset;
   bool with_glitches = false;  // dataset.glitches is the truth (simulated, or glitches.csv present)
   bool with_clean = false;     // dataset.imu_clean is the glitch-free stream
+  bool with_groundtruth = true;  // dataset.groundtruth is known (else the run is not evaluated)
   double duration_s = 0.0;
 };
 
@@ -45,7 +47,18 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
   std::error_code ec;
   if (!fs::is_directory(options.dataset_dir, ec))
     throw InputError(options.dataset_dir.string() + ": not a dataset directory");
-  data.dataset = ReadDataset(options.dataset_dir);
+  // A vigil dataset (with or without mav0/ images) or a EuRoC folder (core/euroc.h).
+  Recording recording = ReadRecording(options.dataset_dir);
+  if (!recording.has_camera)
+    throw InputError(options.dataset_dir.string() +
+                     ": IMU only (no camera.yaml, no mav0/cam0/): vigil run needs a camera and its feature tracks "
+                     "(vigil clean works on IMU-only datasets)");
+  if (!recording.has_features)
+    throw InputError(options.dataset_dir.string() + ": no features.csv: the recording has " +
+                     std::to_string(recording.images.size()) +
+                     " camera images but no feature tracks (vigil track DATASET -o DIR writes them)");
+  data.dataset = std::move(recording.dataset);
+  data.with_groundtruth = recording.has_groundtruth;
   data.with_glitches = fs::exists(options.dataset_dir / dataset_files::kGlitches, ec);
   data.with_clean = !data.dataset.imu_clean.empty();
   const ImuStream& imu = data.dataset.imu;
@@ -110,14 +123,15 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
 
   t = Clock::now();
   const Trajectory groundtruth = GroundTruthAtFrames(data.dataset.groundtruth, data.dataset.frames);
-  const TrajectoryEvaluation evaluation =
-      EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation);
+  const TrajectoryEvaluation evaluation = data.with_groundtruth
+                                              ? EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
+                                              : TrajectoryEvaluation{};
   summary.wall.evaluate_s = SecondsSince(t);
 
   RunConfig resolved = config;  // ToYaml visits (non-const)
   WriteFileAtomic(dir / "config.yaml", config::ToYaml(resolved));
   if (options.write_trajectories) {
-    WriteFileAtomic(dir / "stamped_groundtruth.txt", TumTrajectory(groundtruth));
+    if (data.with_groundtruth) WriteFileAtomic(dir / "stamped_groundtruth.txt", TumTrajectory(groundtruth));
     WriteFileAtomic(dir / "stamped_traj_estimate.txt", TumTrajectory(result.trajectory));
     if (config.detector.type != detectors::DetectorType::kNone)
       WriteFileAtomic(dir / "detections.csv",
@@ -129,6 +143,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   }
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
+  if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
   // A run from a recorded dataset names it, so that its figures show the recorded IMU (vigil plot run).
   if (!options.dataset_dir.empty())
     metrics["dataset"] = std::filesystem::absolute(options.dataset_dir).lexically_normal().string();

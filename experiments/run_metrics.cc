@@ -59,11 +59,23 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   return m;
 }
 
+void SkipEvaluation(const estimator::EstimatorResult& result, nlohmann::json* metrics) {
+  nlohmann::json& m = *metrics;
+  m["status"] = result.ok ? "ok" : "failed";
+  m["failure_reason"] = result.ok ? "" : result.failure_reason;
+  m["evaluation"] = kEvaluationSkipped;
+}
+
 std::string RunSummaryLine(const nlohmann::json& m) {
   std::string s = m.at("status").get<std::string>();
   const std::string reason = m.at("failure_reason").get<std::string>();
   if (!reason.empty()) s += " (" + reason + ")";
   char buf[256];
+  if (m.value("evaluation", std::string()) == kEvaluationSkipped) {
+    std::snprintf(buf, sizeof(buf), ": %s; %lld poses estimated",
+                  kEvaluationSkipped, static_cast<long long>(m["estimator"].value("output_poses", 0)));
+    return s + buf;
+  }
   const nlohmann::json& ate = m.at("ate");
   std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
                 MetricNumber(ate, {"trans_m", "rmse"}), ate.at("align").get<std::string>().c_str(),

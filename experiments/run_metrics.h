@@ -35,6 +35,12 @@ struct RunSummary {
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const TrajectoryEvaluation& evaluation, const nlohmann::json& detection);
 
+// A run of a recording without ground truth: the estimate is written, the metrics are not computed. Sets
+// status from the estimator alone ("ok" or "failed" with its reason) and "evaluation": kEvaluationSkipped;
+// the ATE and relative errors are then null and coverage 0.
+inline constexpr const char* kEvaluationSkipped = "skipped: the dataset has no ground truth";
+void SkipEvaluation(const estimator::EstimatorResult& result, nlohmann::json* metrics);
+
 // "vigil run: ok, ATE RMSE 0.043 m, ... wall 0.85 s": the one-line summary of a metrics.json document.
 std::string RunSummaryLine(const nlohmann::json& metrics);
 

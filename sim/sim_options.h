@@ -10,6 +10,7 @@
 #include "core/config.h"
 #include "core/types.h"
 #include "sim/fault_options.h"
+#include "sim/image_options.h"
 
 namespace vigil::sim {
 
@@ -137,6 +138,7 @@ struct SimOptions {
   CameraModel camera;
   GlitchOptions glitch;
   FaultOptions faults;
+  ImageOptions images;
 
   template <class V>
   void Visit(V& v) {
@@ -150,6 +152,7 @@ struct SimOptions {
     v.Section("glitch", glitch, "injected IMU glitches");
     v.Section("faults", faults,
               "low-cost IMU faults besides the glitches (sim/imu_faults.h gives their order)");
+    v.Section("images", images, "rendered camera images (vigil simulate --images; sim/image_renderer.h)");
   }
 };
 

@@ -4,14 +4,18 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/euroc.h"
+#include "core/mesh.h"
 #include "core/format.h"
 #include "core/output.h"
 #include "sim/camera_simulator.h"
 #include "sim/glitch_injector.h"
+#include "sim/image_renderer.h"
 #include "sim/imu_faults.h"
 #include "sim/imu_synthesizer.h"
 #include "sim/landmarks.h"
 #include "sim/scale_misalignment.h"
+#include "sim/scene.h"
 #include "sim/trajectory_model.h"
 
 namespace vigil::sim {
@@ -63,12 +67,36 @@ Dataset Simulate(const SimOptions& options, uint64_t seed) {
   return d;
 }
 
+EurocImuSensor ImuSensorOf(const ImuOptions& imu) {
+  EurocImuSensor s;
+  s.rate_hz = imu.rate_hz;
+  if (imu.noise.enabled) {
+    s.gyroscope_noise_density = imu.noise.gyro_noise_density;
+    s.gyroscope_random_walk = imu.noise.gyro_bias_random_walk;
+    s.accelerometer_noise_density = imu.noise.accel_noise_density;
+    s.accelerometer_random_walk = imu.noise.accel_bias_random_walk;
+  }
+  return s;
+}
+
+std::uintmax_t WriteImages(const SimOptions& options, uint64_t seed, const Dataset& dataset,
+                           const std::filesystem::path& dir) {
+  const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
+  std::vector<int64_t> times;
+  for (const CameraFrame& f : dataset.frames) times.push_back(f.t_ns);
+  WriteEuroc(dir, dataset, ImuSensorOf(options.imu), times);
+  WriteFileAtomic(dir / kSceneObjFile, MeshObj(MakeScene().Mesh()));
+  return RenderImageSequence(*motion, options.duration_s, options.camera, options.images, seed, times,
+                             EurocImageDir(dir));
+}
+
 Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std::string& config_yaml,
                             const std::filesystem::path& dir, bool force) {
   StagedDirectory staged(dir, force);  // refuses a non-empty `dir` before any work
   Dataset d = Simulate(options, seed);
   WriteFileAtomic(staged.path() / dataset_files::kConfig, config_yaml);
   WriteDataset(staged.path(), d);
+  if (options.images.enabled) WriteImages(options, seed, d, staged.path());
   staged.Commit();
   return d;
 }

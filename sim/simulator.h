@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/dataset.h"
+#include "core/euroc.h"
 #include "sim/imu_synthesizer.h"
 #include "sim/sim_options.h"
 
@@ -26,9 +27,18 @@ Dataset Simulate(const SimOptions& options, uint64_t seed);
 // templates). Throws InputError for bad options.
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed);
 
+// imu0/sensor.yaml of the simulated IMU: its rate and noise model (zeros when the noise is disabled).
+EurocImuSensor ImuSensorOf(const ImuOptions& imu);
+
+// The image side of a dataset directory `dir` (existing) for `dataset` = Simulate(options, seed): the EuRoC
+// layout mav0/ (core/euroc.h) with one rendered PNG per camera frame of dataset.frames, and scene.obj
+// (core/mesh.h). Returns the PNG bytes written.
+std::uintmax_t WriteImages(const SimOptions& options, uint64_t seed, const Dataset& dataset,
+                           const std::filesystem::path& dir);
+
 // `vigil simulate`: simulates and writes the dataset directory `dir` (staged in a temporary sibling and
 // renamed at the end; a non-empty `dir` is refused unless `force`). `config_yaml` is written as config.yaml:
-// the fully resolved configuration that reproduces the dataset.
+// the fully resolved configuration that reproduces the dataset. With images.enabled, also WriteImages().
 Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std::string& config_yaml,
                             const std::filesystem::path& dir, bool force);
 
