@@ -13,6 +13,7 @@
 #include "core/euroc.h"
 #include "core/output.h"
 #include "experiments/frontend_metrics.h"
+#include "experiments/frontend_run.h"
 #include "experiments/frontend_stage.h"
 #include "frontend/frontend_options.h"
 
@@ -64,6 +65,12 @@ void AddTrackCommand(CLI::App& root) {
     const experiments::TrackedFeatures tracked =
         experiments::TrackImageFiles(recording.images, camera, config.frontend.tracker);
     std::optional<frontend::ReprojectionEvaluation> reprojection;
+    const std::optional<TriangleMesh> scene = experiments::FindSceneMesh(args->dataset);
+    if (scene && recording.has_groundtruth)
+      reprojection = experiments::EvaluateTracks(
+          tracked.frames, recording.dataset.groundtruth, camera,
+          [&](const Eigen::Vector3d& o, const Eigen::Vector3d& d) { return RayCast(*scene, o, d); },
+          config.frontend.evaluation.outlier_threshold_px);
     nlohmann::json json = experiments::FrontendMetricsJson(tracked.frames, tracked.stats,
                                                            config.frontend.evaluation, reprojection);
     json["dataset"] = std::filesystem::absolute(args->dataset).lexically_normal().string();

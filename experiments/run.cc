@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -12,6 +13,7 @@
 #include "estimator/run_estimator.h"
 #include "experiments/detection_stage.h"
 #include "experiments/evaluate_trajectory.h"
+#include "experiments/frontend_run.h"
 #include "experiments/imu_axis_record.h"
 #include "experiments/run_inputs.h"
 #include "experiments/run_metrics.h"
@@ -33,12 +35,15 @@ struct RunData {
   bool with_clean = false;     // dataset.imu_clean is the glitch-free stream
   bool with_groundtruth = true;  // dataset.groundtruth is known (else the run is not evaluated)
   double duration_s = 0.0;
+  std::optional<FrontendRunResult> frontend;  // when the tracker made the feature tracks
 };
 
 RunData LoadData(const RunConfig& config, const RunOptions& options) {
   RunData data;
   if (options.dataset_dir.empty()) {
     data.dataset = sim::Simulate(config.sim, config.seed);
+    if (config.frontend.features == frontend::FeatureSource::kTracked)
+      data.frontend = TrackSimulation(config, &data.dataset);
     data.with_glitches = data.with_clean = true;
     data.duration_s = config.sim.duration_s;
     return data;
@@ -53,10 +58,13 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
     throw InputError(options.dataset_dir.string() +
                      ": IMU only (no camera.yaml, no mav0/cam0/): vigil run needs a camera and its feature tracks "
                      "(vigil clean works on IMU-only datasets)");
+  // Tracks from the images when asked for, or when the recording has images but no features.csv.
+  if (config.frontend.features == frontend::FeatureSource::kTracked ||
+      (!recording.has_features && !recording.images.empty()))
+    data.frontend = TrackRecording(config, options.dataset_dir, &recording);
   if (!recording.has_features)
-    throw InputError(options.dataset_dir.string() + ": no features.csv: the recording has " +
-                     std::to_string(recording.images.size()) +
-                     " camera images but no feature tracks (vigil track DATASET -o DIR writes them)");
+    throw InputError(options.dataset_dir.string() +
+                     ": no features.csv and no camera images (mav0/cam0/data.csv) to track");
   data.dataset = std::move(recording.dataset);
   data.with_groundtruth = recording.has_groundtruth;
   data.with_glitches = fs::exists(options.dataset_dir / dataset_files::kGlitches, ec);
@@ -102,7 +110,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   Clock::time_point t = Clock::now();
   const RunData data = LoadData(config, options);
   summary.duration_s = data.duration_s;
-  summary.wall.simulate_s = SecondsSince(t);
+  summary.wall.simulate_s = SecondsSince(t) - (data.frontend ? data.frontend->track_s : 0.0);
 
   t = Clock::now();
   const auto templates = ResolveTemplates(config, options.templates);
@@ -144,6 +152,10 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
   if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
+  if (data.frontend) {
+    metrics["frontend"] = data.frontend->metrics;
+    metrics["wall_time_s"]["track"] = data.frontend->track_s;  // rendering (simulated runs) and tracking
+  }
   // A run from a recorded dataset names it, so that its figures show the recorded IMU (vigil plot run).
   if (!options.dataset_dir.empty())
     metrics["dataset"] = std::filesystem::absolute(options.dataset_dir).lexically_normal().string();
