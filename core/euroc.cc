@@ -300,8 +300,10 @@ Recording ReadRecording(const fs::path& dir) {
   for (const CameraImage& image : rec.images) frame_times.push_back(image.t_ns);
   const fs::path features = root / dataset_files::kFeatures;
   if (rec.has_camera && IsFile(features)) {
+    // Tracks are undistorted pixels: with lens distortion they may lie outside the image, so the image bounds
+    // are only checked for a pinhole camera.
     FeatureChecks checks;
-    checks.camera = &d.camera;
+    checks.camera = d.camera.HasDistortion() ? nullptr : &d.camera;
     d.frames = ReadFeaturesCsv(features.string(), frame_times, &checks);
     rec.has_features = true;
   } else {

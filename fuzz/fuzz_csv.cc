@@ -1,7 +1,10 @@
 // libFuzzer target for one CSV / text reader, chosen by VIGIL_FUZZ_READER at compile time
 // (fuzz/CMakeLists.txt): imu, glitches, groundtruth, landmarks, features (with the checks ReadDataset
-// applies) and tum.
+// applies), tum, and the EuRoC layout's cam0 data.csv (euroc_images), cam0 / imu0 sensor.yaml (euroc_cam,
+// euroc_imu) and scene.obj (obj).
 #include "core/dataset.h"
+#include "core/euroc.h"
+#include "core/mesh.h"
 #include "fuzz/fuzz_input.h"
 
 namespace {
@@ -31,6 +34,14 @@ void Read(const TextFile& path) {
     (void)ReadFeaturesCsv(path, frame_times, &checks);
   } else if (reader == "tum") {
     (void)ReadTumTrajectory(path);
+  } else if (reader == "euroc_images") {
+    (void)ReadEurocImageList(path, "/nonexistent", /*check_files=*/false);
+  } else if (reader == "euroc_cam") {
+    (void)ReadEurocCameraSensorYaml(path);
+  } else if (reader == "euroc_imu") {
+    (void)ReadEurocImuSensorYaml(path);
+  } else if (reader == "obj") {
+    (void)ReadMeshObj(path);
   } else {
     std::abort();
   }

@@ -184,3 +184,100 @@ TEST_F(Cli, DuplicateKeysAndBlockScalarsGiveOneLineErrors) {
 
 }  // namespace
 }  // namespace vigil
+
+namespace vigil {
+namespace {
+
+// A EuRoC folder as published, from `vigil simulate --images` (1 s, 160 x 120): tmp/eu/mav0 with the
+// dataset's features.csv beside it.
+class EurocCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    config_ = tmp_.File("config.yaml",
+                        "duration_s: 1\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
+    const std::string ds = (tmp_.path() / "ds").string();
+    ASSERT_EQ(Vigil(tmp_, "simulate " + config_ + " -o " + ds + " --images").status, 0);
+    fs::create_directories(eu_);
+    fs::copy(tmp_.path() / "ds" / "mav0", eu_ / "mav0", fs::copy_options::recursive);
+    fs::copy_file(tmp_.path() / "ds" / "features.csv", eu_ / "features.csv");
+  }
+  // `vigil run` on the folder: exit 2, one line containing `reason`, no output directory.
+  void ExpectRunRefused(const std::string& reason) {
+    const Result r = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+    EXPECT_FALSE(fs::exists(out_));
+  }
+  void Edit(const std::string& file, const std::string& from, const std::string& to) {
+    std::string text = ReadFile(eu_ / file);
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    WriteFileAtomic(eu_ / file, text);
+  }
+
+  TempDir tmp_;
+  std::string config_;
+  fs::path eu_ = tmp_.path() / "eu", out_ = tmp_.path() / "out";
+};
+
+TEST_F(EurocCli, RunsAsPublishedWithAndWithoutGroundTruth) {
+  const Result with = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+  ASSERT_EQ(with.status, 0) << with.err;
+  EXPECT_NE(ReadFile(out_ / "metrics.json").find("\"ate\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(out_ / "stamped_groundtruth.txt"));
+  fs::remove_all(eu_ / "mav0" / "state_groundtruth_estimate0");
+  const fs::path out2 = tmp_.path() / "out2";
+  // Ground-truth initialization (the config's default) cannot work without it: a clear error.
+  const std::string mav0 = (eu_ / "mav0").string();
+  const Result init = Vigil(tmp_, "run " + config_ + " --dataset " + mav0 + " -o " + out2.string());
+  EXPECT_EQ(init.status, 2);
+  EXPECT_NE(init.err.find("groundtruth initialization needs ground truth"), std::string::npos) << init.err;
+  // VINS initialization: the estimate is written, the metrics skipped (status from the estimator alone).
+  const Result without = Vigil(
+      tmp_, "run " + config_ + " --set estimator.init=vins --dataset " + mav0 + " -o " + out2.string());
+  EXPECT_TRUE(without.status == 0 || without.status == 1) << without.err;
+  EXPECT_NE(without.err.find("skipped: the dataset has no ground truth"), std::string::npos) << without.err;
+  const std::string metrics = ReadFile(out2 / "metrics.json");
+  EXPECT_NE(metrics.find("\"evaluation\": \"skipped: the dataset has no ground truth\""), std::string::npos);
+  EXPECT_NE(metrics.find(without.status == 0 ? "\"status\": \"ok\"" : "\"status\": \"failed\""),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(out2 / "stamped_traj_estimate.txt"));
+  EXPECT_FALSE(fs::exists(out2 / "stamped_groundtruth.txt"));
+}
+
+TEST_F(EurocCli, MissingImageIsRefused) {
+  const fs::path data = eu_ / "mav0" / "cam0" / "data";
+  fs::remove(*fs::directory_iterator(data));
+  ExpectRunRefused("image file is missing");
+}
+
+TEST_F(EurocCli, RowWithoutFileNameIsRefused) {
+  std::string text = ReadFile(eu_ / "mav0/cam0/data.csv");
+  const std::size_t line3 = text.find('\n', text.find('\n') + 1) + 1;
+  text.replace(text.find(',', line3), text.find('\n', line3) - text.find(',', line3), ",");
+  WriteFileAtomic(eu_ / "mav0/cam0/data.csv", text);
+  ExpectRunRefused("mav0/cam0/data.csv:3: filename: missing");
+}
+
+TEST_F(EurocCli, SensorYamlWithoutIntrinsicsIsRefused) {
+  Edit("mav0/cam0/sensor.yaml", "intrinsics:", "# intrinsics:");
+  ExpectRunRefused("mav0/cam0/sensor.yaml: intrinsics: missing");
+}
+
+TEST_F(EurocCli, ImuOnlyCleansButDoesNotRun) {
+  fs::remove_all(eu_ / "mav0" / "cam0");
+  ExpectRunRefused("IMU only");
+  const Result clean = Vigil(tmp_, "clean " + eu_.string() + " -o " + out_.string() + " --detector hampel");
+  EXPECT_EQ(clean.status, 0) << clean.err;
+  EXPECT_TRUE(fs::exists(out_ / "imu.csv"));
+}
+
+TEST_F(EurocCli, ImagesWithoutFeaturesNeedTheFrontEnd) {
+  fs::remove(eu_ / "features.csv");
+  ExpectRunRefused("no features.csv");
+}
+
+}  // namespace
+}  // namespace vigil

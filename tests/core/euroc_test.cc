@@ -215,6 +215,10 @@ TEST(EurocRecording, FeaturesBesideMav0AreReadAtTheImageTimes) {
   ASSERT_EQ(rec.dataset.frames.size(), times.size());
   EXPECT_EQ(rec.dataset.frames[2].features.size(), 1u);
   EXPECT_TRUE(rec.dataset.frames[1].features.empty());
+  // Undistorted pixels of a distorted camera may lie outside the image (barrel distortion).
+  std::ofstream(tmp.path() / "features.csv")
+      << "#timestamp [ns],id,u [px],v [px]\n" << times[2] << ",7,-40.5,120\n";
+  EXPECT_EQ(ReadRecording(tmp.path()).dataset.frames[2].features[0].uv_px.x(), -40.5);
 }
 
 TEST(EurocRecording, BadInputNamesTheFile) {
