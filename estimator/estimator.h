@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <ceres/loss_function.h>
+#include <ceres/solver.h>
 #include <Eigen/Core>
 
 #include "core/camera.h"
@@ -88,6 +89,16 @@ class Estimator {
   void Predict(Frame* frame) const;
   // Builds and solves the window problem; false with a reason when the solver fails.
   bool Optimize(bool marginalize_oldest_next, std::string* reason);
+  // Optimize's steps (estimator_optimize.cc), in the order it takes them.
+  struct Elimination;
+  struct WindowProblem;
+  void RepropagateImuFactors();
+  Elimination PlanElimination();
+  void AddStateBlocks(const Elimination& elimination, WindowProblem* w);
+  void AddPriors(WindowProblem* w);
+  void AddImuFactors(WindowProblem* w);
+  void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
+  ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
   std::string DetectFailure(const Eigen::Vector3d& previous_p_W) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.

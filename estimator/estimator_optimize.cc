@@ -63,10 +63,87 @@ class ContiguousCopies {
   std::vector<Copy> copies_;
 };
 
+ceres::Problem::Options WindowProblemOptions() {
+  ceres::Problem::Options options;
+  options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.enable_fast_removal = false;
+  // The problem is rebuilt every frame by Optimize, always from the window's own blocks (distinct,
+  // non-overlapping arrays of fixed sizes), so Ceres' per-block checks against aliasing and size mismatches
+  // find nothing; they cost 1.1 % of a paper run's instructions (callgrind, BM_RunPaper/20).
+  options.disable_all_safety_checks = true;
+  return options;
+}
+
+ceres::Solver::Options WindowSolverOptions(const SolverOptions& solver, bool marginalize_oldest_next,
+                                           std::shared_ptr<ceres::ParameterBlockOrdering> ordering) {
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_SCHUR;
+  options.trust_region_strategy_type = ceres::DOGLEG;
+  options.max_num_iterations = solver.max_iterations;
+  options.function_tolerance = solver.function_tolerance;
+  options.num_threads = 1;
+  options.linear_solver_ordering = std::move(ordering);
+  // Every residual is whitened (IMU: square-root information, reprojection: focal length / pixel std, prior:
+  // square-root form), so the columns need no Jacobi rescaling; skipping it saves two passes over the
+  // Jacobian per iteration (about 4 % of a run) and leaves the ATE unchanged (seeds 1-5, 4 decimals).
+  options.jacobi_scaling = false;
+  options.logging_type = ceres::SILENT;
+  if (solver.max_time_s > 0.0)
+    options.max_solver_time_in_seconds =
+        solver.max_time_s * (marginalize_oldest_next ? solver.marginalize_old_time_factor : 1.0);
+  return options;
+}
+
 }  // namespace
 
+// Ceres eliminates the first group of the ordering (DENSE_SCHUR's Schur complement) and orders the blocks of
+// a group by address. Group 0 holds every inverse depth and the speed-bias blocks of alternate frames outside
+// the prior: an independent set, since a speed-bias block couples only to its neighbours' states (eliminating
+// them keeps the reduced camera matrix about a quarter smaller). Those blocks are solved as ContiguousCopies,
+// so that their order is the window's and the tracks' and results never depend on heap addresses. Group
+// k + 1 holds the rest of frame k (its pose first: the pose precedes the speed-bias block in Frame).
+struct Estimator::Elimination {
+  std::vector<std::pair<int, FeatureTrack*>> tracks;  // the usable tracks: their inverse depths
+  std::vector<bool> speed_bias;                       // per window frame: its speed-bias block
+  std::size_t size = 0;                               // doubles in the eliminated blocks
+};
+
+// The window's problem and what its solve and write-back need.
+struct Estimator::WindowProblem {
+  explicit WindowProblem(std::size_t eliminated_size)
+      : problem(WindowProblemOptions()), eliminated(eliminated_size) {}
+  ceres::Problem problem;
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;  // the factors built for this solve
+  ContiguousCopies eliminated;
+  std::shared_ptr<ceres::ParameterBlockOrdering> ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+  std::vector<double*> speed_bias;  // per window frame: its block or the eliminated copy
+  std::vector<double*> inv_depth;   // per Elimination::tracks entry: the eliminated copy
+  std::vector<ImuTerm> imu_terms;   // for gating
+};
+
 bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
-  // Re-integrate IMU factors whose bias estimate moved far from their linearization point.
+  RepropagateImuFactors();
+  const Elimination elimination = PlanElimination();
+  WindowProblem window(elimination.size);
+  AddStateBlocks(elimination, &window);
+  AddPriors(&window);
+  AddImuFactors(&window);
+  AddReprojectionFactors(elimination, &window);
+  const NavState oldest_before = window_.front()->State();
+  const ceres::Solver::Summary summary = SolveAndGate(marginalize_oldest_next, &window);
+  window.eliminated.CopyBack();
+  if (!summary.IsSolutionUsable()) {
+    *reason = "solver failed: " + summary.message;
+    return false;
+  }
+  if (prior_) HoldGauge(oldest_before);
+  return true;
+}
+
+// Re-integrates the IMU factors whose bias estimate moved far from their linearization point.
+void Estimator::RepropagateImuFactors() {
   for (std::size_t i = 1; i < window_.size(); ++i) {
     const NavState s = window_[i - 1]->State();
     Preintegration& pre = *window_[i]->imu_from_prev;
@@ -74,117 +151,91 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
         (s.b_g - pre.linearized_b_g()).norm() > options_.window.repropagate_gyro_bias)
       pre.Repropagate(s.b_a, s.b_g);
   }
+}
 
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  problem_options.enable_fast_removal = false;
-  // The problem is rebuilt every frame by the code below, always from the window's own blocks (distinct,
-  // non-overlapping arrays of fixed sizes), so Ceres' per-block checks against aliasing and size mismatches
-  // find nothing; they cost 1.1 % of a paper run's instructions (callgrind, BM_RunPaper/20).
-  problem_options.disable_all_safety_checks = true;
-  ceres::Problem problem(problem_options);
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-
-  // Ceres eliminates the first group of the ordering (DENSE_SCHUR's Schur complement) and orders the blocks
-  // of a group by address. Group 0 holds every inverse depth and the speed-bias blocks of alternate frames
-  // outside the prior: an independent set, since a speed-bias block couples only to its neighbours' states
-  // (eliminating them keeps the reduced camera matrix about a quarter smaller). Those blocks are solved as
-  // ContiguousCopies, so that their order is the window's and the tracks' and results never depend on heap
-  // addresses. Group k + 1 holds the rest of frame k (its pose first: the pose precedes the speed-bias block
-  // in Frame).
-  std::vector<std::pair<int, FeatureTrack*>> tracks;
+Estimator::Elimination Estimator::PlanElimination() {
+  Elimination e;
   for (auto& [id, track] : features_.tracks())
-    if (features_.Usable(track)) tracks.emplace_back(id, &track);
-  std::vector<bool> eliminate_speed_bias(window_.size());
-  std::size_t eliminated_size = tracks.size();
+    if (features_.Usable(track)) e.tracks.emplace_back(id, &track);
+  e.speed_bias.resize(window_.size());
+  e.size = e.tracks.size();
   for (std::size_t k = 0; k < window_.size(); ++k) {
-    eliminate_speed_bias[k] =
-        (k == 0 || !eliminate_speed_bias[k - 1]) && !(prior_ && prior_->Involves(window_[k]->speed_bias));
-    if (eliminate_speed_bias[k]) eliminated_size += kSpeedBiasSize;
+    e.speed_bias[k] =
+        (k == 0 || !e.speed_bias[k - 1]) && !(prior_ && prior_->Involves(window_[k]->speed_bias));
+    if (e.speed_bias[k]) e.size += kSpeedBiasSize;
   }
-  ContiguousCopies eliminated(eliminated_size);
-  std::vector<double*> speed_bias, inv_depth;
+  return e;
+}
+
+void Estimator::AddStateBlocks(const Elimination& elimination, WindowProblem* w) {
   for (std::size_t k = 0; k < window_.size(); ++k)
-    speed_bias.push_back(eliminate_speed_bias[k] ? eliminated.Add(window_[k]->speed_bias, kSpeedBiasSize)
-                                                 : window_[k]->speed_bias);
-  for (const auto& [id, track] : tracks) inv_depth.push_back(eliminated.Add(&track->inv_depth, 1));
-  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+    w->speed_bias.push_back(elimination.speed_bias[k]
+                                ? w->eliminated.Add(window_[k]->speed_bias, kSpeedBiasSize)
+                                : window_[k]->speed_bias);
+  for (const auto& [id, track] : elimination.tracks)
+    w->inv_depth.push_back(w->eliminated.Add(&track->inv_depth, 1));
   for (std::size_t k = 0; k < window_.size(); ++k) {
-    problem.AddParameterBlock(window_[k]->pose, kPoseSize, &pose_manifold_);
-    problem.AddParameterBlock(speed_bias[k], kSpeedBiasSize);
-    ordering->AddElementToGroup(window_[k]->pose, static_cast<int>(k) + 1);
-    ordering->AddElementToGroup(speed_bias[k], eliminate_speed_bias[k] ? 0 : static_cast<int>(k) + 1);
+    w->problem.AddParameterBlock(window_[k]->pose, kPoseSize, &pose_manifold_);
+    w->problem.AddParameterBlock(w->speed_bias[k], kSpeedBiasSize);
+    w->ordering->AddElementToGroup(window_[k]->pose, static_cast<int>(k) + 1);
+    w->ordering->AddElementToGroup(w->speed_bias[k], elimination.speed_bias[k] ? 0 : static_cast<int>(k) + 1);
   }
+  for (double* inv_depth : w->inv_depth) w->ordering->AddElementToGroup(inv_depth, 0);
+}
+
+void Estimator::AddPriors(WindowProblem* w) {
   // Without a prior the window's gauge (position and yaw) is free: hold the oldest pose.
   if (!prior_) {
-    problem.SetParameterBlockConstant(window_.front()->pose);
+    w->problem.SetParameterBlockConstant(window_.front()->pose);
   } else {
     for (auto& factor : PriorFactors(prior_)) {
-      problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
-      costs.push_back(std::move(factor));
+      w->problem.AddResidualBlock(factor.get(), nullptr, factor->parameter_blocks());
+      w->costs.push_back(std::move(factor));
     }
   }
   // A bias-only prior: it does not fix the gauge, so it is independent of the branch above.
-  if (bias_prior_) problem.AddResidualBlock(bias_prior_.get(), nullptr, speed_bias.front());
-  std::vector<ImuTerm> imu_terms;
+  if (bias_prior_) w->problem.AddResidualBlock(bias_prior_.get(), nullptr, w->speed_bias.front());
+}
+
+void Estimator::AddImuFactors(WindowProblem* w) {
   for (std::size_t k = 1; k < window_.size(); ++k) {
     auto factor = std::make_unique<ImuFactor>(*window_[k]->imu_from_prev, g_W_);
-    imu_terms.push_back(
-        {factor.get(), {window_[k - 1]->pose, speed_bias[k - 1], window_[k]->pose, speed_bias[k]}});
-    problem.AddResidualBlock(factor.get(), nullptr, imu_terms.back().blocks[0], imu_terms.back().blocks[1],
-                             imu_terms.back().blocks[2], imu_terms.back().blocks[3]);
-    costs.push_back(std::move(factor));
+    const ImuTerm& term = w->imu_terms.emplace_back(ImuTerm{
+        factor.get(), {window_[k - 1]->pose, w->speed_bias[k - 1], window_[k]->pose, w->speed_bias[k]}});
+    w->problem.AddResidualBlock(factor.get(), nullptr, term.blocks[0], term.blocks[1], term.blocks[2],
+                                term.blocks[3]);
+    w->costs.push_back(std::move(factor));
   }
+}
+
+void Estimator::AddReprojectionFactors(const Elimination& elimination, WindowProblem* w) {
   std::vector<ReprojectionTerm> reprojections;
-  for (std::size_t i = 0; i < tracks.size(); ++i) {
-    ordering->AddElementToGroup(inv_depth[i], 0);
-    AppendReprojectionTerms(tracks[i].first, *tracks[i].second, inv_depth[i], &reprojections);
-  }
+  for (std::size_t i = 0; i < elimination.tracks.size(); ++i)
+    AppendReprojectionTerms(elimination.tracks[i].first, *elimination.tracks[i].second, w->inv_depth[i],
+                            &reprojections);
   for (const ReprojectionTerm& term : reprojections)
-    problem.AddResidualBlock(term.factor, &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
+    w->problem.AddResidualBlock(term.factor, &loss_, term.blocks[0], term.blocks[1], term.blocks[2]);
   // Drop the cached factors of tracks that no longer exist.
   reprojection_factors_.KeepTracks(features_.tracks());
+}
 
-  const NavState oldest_before = window_.front()->State();
-
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::DENSE_SCHUR;
-  solver_options.trust_region_strategy_type = ceres::DOGLEG;
-  solver_options.max_num_iterations = options_.solver.max_iterations;
-  solver_options.function_tolerance = options_.solver.function_tolerance;
-  solver_options.num_threads = 1;
-  solver_options.linear_solver_ordering = ordering;
-  // Every residual is whitened (IMU: square-root information, reprojection: focal length / pixel std, prior:
-  // square-root form), so the columns need no Jacobi rescaling; skipping it saves two passes over the
-  // Jacobian per iteration (about 4 % of a run) and leaves the ATE unchanged (seeds 1-5, 4 decimals).
-  solver_options.jacobi_scaling = false;
-  solver_options.logging_type = ceres::SILENT;
-  if (options_.solver.max_time_s > 0.0) {
-    solver_options.max_solver_time_in_seconds =
-        options_.solver.max_time_s *
-        (marginalize_oldest_next ? options_.solver.marginalize_old_time_factor : 1.0);
-  }
-  StopAfterAcceptedSteps stop(options_.solver.accepted_steps, problem.NumResiduals());
+// Solves; when IMU factors then fail their chi-square gate (in-estimator mitigation), they are inflated and
+// the problem is solved once more.
+ceres::Solver::Summary Estimator::SolveAndGate(bool marginalize_oldest_next, WindowProblem* w) {
+  ceres::Solver::Options solver_options =
+      WindowSolverOptions(options_.solver, marginalize_oldest_next, w->ordering);
+  StopAfterAcceptedSteps stop(options_.solver.accepted_steps, w->problem.NumResiduals());
   if (options_.solver.accepted_steps > 0) solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &problem, &summary);
-  // In-estimator mitigation: IMU factors failing their chi-square gate are inflated, then one more solve.
-  if (summary.IsSolutionUsable() && GateImuFactors(options_.mitigation.gating, imu_terms, &gating_) > 0) {
+  ceres::Solve(solver_options, &w->problem, &summary);
+  if (summary.IsSolutionUsable() && GateImuFactors(options_.mitigation.gating, w->imu_terms, &gating_) > 0) {
     timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
-    StopAfterAcceptedSteps stop_again(options_.solver.accepted_steps, problem.NumResiduals());
+    StopAfterAcceptedSteps stop_again(options_.solver.accepted_steps, w->problem.NumResiduals());
     if (options_.solver.accepted_steps > 0) solver_options.callbacks = {&stop_again};
-    ceres::Solve(solver_options, &problem, &summary);
+    ceres::Solve(solver_options, &w->problem, &summary);
   }
-  eliminated.CopyBack();
   timing_.solver_iterations += summary.num_successful_steps + summary.num_unsuccessful_steps;
-  if (!summary.IsSolutionUsable()) {
-    *reason = "solver failed: " + summary.message;
-    return false;
-  }
-  if (prior_) HoldGauge(oldest_before);
-  return true;
+  return summary;
 }
 
 // Position and yaw of the window are unobservable; the prior keeps only relative information, so the solver
