@@ -119,11 +119,27 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
   return outcome;
 }
 
+namespace {
+
+// Whether `dir` holds anything besides sweep.yaml being staged: a shard that starts beside another sees the
+// other's sweep.yaml staging for an instant before it is linked into place (CommitSweepFile), and that
+// directory is still a new sweep, not a user's directory.
+bool HasEntriesBesidesSweepFileStaging(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const auto staging = ParseStagingName(entry.path().filename().string());
+    if (!staging || staging->final_name != "sweep.yaml") return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void CheckSweepDirectory(const fs::path& dir, bool resume, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError(dir.string() + ": exists and is not a directory");
-  const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
+  const bool non_empty = fs::is_directory(dir, ec) && HasEntriesBesidesSweepFileStaging(dir);
   if (!non_empty) return;
   const bool is_sweep = fs::is_regular_file(dir / "sweep.yaml", ec);
   if (resume && !is_sweep)
