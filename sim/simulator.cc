@@ -68,7 +68,7 @@ Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std:
   StagedDirectory staged(dir, force);  // refuses a non-empty `dir` before any work
   Dataset d = Simulate(options, seed);
   WriteFileAtomic(staged.path() / dataset_files::kConfig, config_yaml);
-  WriteDataset(staged.path(), d);
+  WriteDataset(staged.path(), d, dir);  // errors name the output, not its staging
   staged.Commit();
   return d;
 }
