@@ -8,20 +8,6 @@
 #include "detectors/detector.h"
 
 namespace vigil::experiments {
-namespace {
-
-// Whether `text` names the dotted config key `key` as a whole word ("camera.rate_hz", not "rate_hz_max").
-bool MentionsKey(const std::string& text, const std::string& key) {
-  const auto word = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
-  };
-  for (std::size_t at = text.find(key); !key.empty() && at != std::string::npos; at = text.find(key, at + 1))
-    if ((at == 0 || !word(text[at - 1])) && (at + key.size() == text.size() || !word(text[at + key.size()])))
-      return true;
-  return false;
-}
-
-}  // namespace
 
 RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides) {
   RunConfig config;
@@ -37,26 +23,17 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   try {
     ValidateRunConfig(config, origin);
   } catch (const InputError& e) {
-    // "origin: key: reason": name the --set that gave the key its value, else the --set of a key the reason
-    // names (a cross-key check such as "imu.rate_hz: must be at least camera.rate_hz"), else the key's line.
-    const std::string message = e.what(), prefix = origin + ": ";
-    if (message.compare(0, prefix.size(), prefix) != 0) throw;
-    const std::string rest = message.substr(prefix.size());
-    const std::string key = rest.substr(0, rest.find(": "));
-    const std::string reason = rest.substr(std::min(rest.size(), key.size() + 2));
-    const auto set_of = [&](const std::string& k) -> const std::string* {
-      for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)  // the last --set of a key wins
-        if (o->compare(0, k.size() + 1, k + "=") == 0) return &*o;
-      return nullptr;
-    };
-    if (const std::string* o = set_of(key)) throw InputError("--set " + *o + ": " + rest);
-    for (const auto& o : overrides) {
-      const std::string other = o.substr(0, o.find('='));
-      if (MentionsKey(reason, other)) throw InputError("--set " + *set_of(other) + ": " + rest);
-    }
-    if (path.empty()) throw;
-    const int line = config::KeyLine(config::LoadYamlFile(path), key);
-    if (line > 0) throw InputError(Located(path, line, rest));
+    // Name where the value at fault came from: the last --set of a key the error is about, else the line of
+    // such a key in the file.
+    std::string rest;
+    const std::vector<std::string> keys = KeysOfConfigError(e.what(), origin, &rest);
+    for (const std::string& key : keys)
+      for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+        if (o->compare(0, key.size() + 1, key + "=") == 0) throw InputError("--set " + *o + ": " + rest);
+    if (path.empty() || keys.empty()) throw;
+    const YAML::Node root = config::LoadYamlFile(path);
+    for (const std::string& key : keys)
+      if (const int line = config::KeyLine(root, key); line > 0) throw InputError(Located(path, line, rest));
     throw;
   }
   return config;
@@ -69,6 +46,30 @@ void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   } catch (const InputError& e) {
     throw InputError(origin + ": " + e.what());
   }
+}
+
+std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,
+                                           std::string* rest) {
+  const std::string prefix = origin + ": ";
+  if (message.compare(0, prefix.size(), prefix) != 0) return {};
+  *rest = message.substr(prefix.size());
+  const std::size_t colon = rest->find(": ");
+  std::vector<std::string> keys{rest->substr(0, colon)};
+  if (colon == std::string::npos) return keys;
+  const auto in_key = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+  };
+  const std::string reason = rest->substr(colon + 2);
+  for (std::size_t i = 0; i < reason.size();) {
+    std::size_t j = i;
+    while (j < reason.size() && in_key(reason[j])) ++j;
+    std::string word = reason.substr(i, j - i);
+    while (!word.empty() && word.back() == '.') word.pop_back();  // the end of a sentence
+    if (word.find('.') != std::string::npos && std::isalpha(static_cast<unsigned char>(word[0])))
+      keys.push_back(word);
+    i = std::max(j, i + 1);
+  }
+  return keys;
 }
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
