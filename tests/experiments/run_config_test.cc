@@ -59,6 +59,10 @@ TEST(RunConfig, CrossKeyChecksNameTheLineOrTheSet) {
             path + ":3: imu.rate_hz: must be at least camera.rate_hz");
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"imu.rate_hz=25"}); }),
             "--set imu.rate_hz=25: imu.rate_hz: must be at least camera.rate_hz");
+  // The key at fault is not in the file: the line of the other key its reason names.
+  const std::string fast = dir.File("f.yaml", "seed: 1\ncamera:\n  rate_hz: 1e12\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(fast); }),
+            fast + ":3: imu.rate_hz: must be at least camera.rate_hz");
   const std::string tbc = dir.File("t.yaml", "camera:\n  T_BC: [1, 2]\n");
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(tbc); }).rfind(tbc + ":2: camera.T_BC: ", 0), 0u);
   const std::string axes = dir.File("a.yaml", "glitch:\n  enabled: true\n  axes: [az, az]\n");
