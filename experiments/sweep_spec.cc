@@ -401,7 +401,8 @@ void ThrowCellError(const SweepSpec& spec, const SweepCell& cell, const std::str
   const std::vector<const SweepOverride*> applied = CellOverrides(spec, cell);
   for (const std::string& key : keys)
     for (auto o = applied.rbegin(); o != applied.rend(); ++o)
-      if ((*o)->key == key) throw InputError(Located(spec.path, (*o)->line, rest + in_cell));
+      if (key == (*o)->key || key.rfind((*o)->key + ".", 0) == 0)  // the key, or a section holding it
+        throw InputError(Located(spec.path, (*o)->line, rest + in_cell));
   const YAML::Node base = config::LoadYamlFile(spec.base.string());
   for (const std::string& key : keys)
     if (const int line = config::KeyLine(base, key); line > 0)

@@ -459,7 +459,7 @@ TEST(SweepRunner, AnInvalidPlanWritesNothing) {
   dir.File("huge.yaml", "base: base.yaml\nset: {duration_s: 1e9}\nmethods: {original: none}\nseeds: [1]\n");
   dir.File("k500.yaml", "base: base.yaml\nmethods: {dtw: {type: dtw, dtw: {templates: 500}}}\nseeds: [1]\n");
   for (const auto& [name, why] : std::vector<std::pair<std::string, std::string>>{
-           {"huge.yaml", "huge.yaml:3: duration_s: "},
+           {"huge.yaml", "huge.yaml:2: duration_s: "},
            {"k500.yaml",
             "k500.yaml:2: detector.dtw.templates: a template library of k = 500 templates needs "
             "k + 1 = 501 clean slices"}}) {
