@@ -17,21 +17,6 @@
 #include "detectors/template_library.h"
 
 namespace vigil::app {
-namespace {
-
-// imu_clean.csv must describe the same samples as imu.csv.
-void CheckSameSamples(const ImuStream& imu, const ImuStream& clean, const std::string& clean_path) {
-  if (clean.size() != imu.size())
-    throw InputError(clean_path + ": " + std::to_string(clean.size()) + " samples, but the input has " +
-                     std::to_string(imu.size()));
-  for (std::size_t t = 0; t < imu.size(); ++t)
-    if (clean[t].t_ns != imu[t].t_ns)
-      throw InputError(Located(clean_path, static_cast<int>(t) + 2,
-                               "timestamp " + std::to_string(clean[t].t_ns) + " differs from the input's " +
-                                   std::to_string(imu[t].t_ns)));
-}
-
-}  // namespace
 
 void AddCleanCommand(CLI::App& root) {
   auto* cmd =
@@ -93,7 +78,7 @@ void AddCleanCommand(CLI::App& root) {
     std::vector<GlitchRecord> glitches;
     if (has_clean) {
       imu_clean = ReadImuCsv(clean_path.string());
-      CheckSameSamples(raw, imu_clean, clean_path.string());
+      CheckCleanImuMatches(raw, imu_clean, input.imu.string(), clean_path.string());
     }
     if (has_glitches) glitches = OffsetGlitches(ReadGlitchesCsv(glitches_path.string()));
 
@@ -117,7 +102,8 @@ void AddCleanCommand(CLI::App& root) {
       inputs.push_back(file);
     RefuseOutputOverInputs(args->output, inputs);
     StagedDirectory out(args->output, args->force);
-    WriteFileAtomic(out.path() / dataset_files::kImu, ImuCsv(result.cleaned));
+    WriteFileAtomic(out.path() / dataset_files::kImu,
+                    ImuCsv(result.cleaned, (fs::path(args->output) / dataset_files::kImu).string()));
     WriteFileAtomic(out.path() / "detections.csv", detectors::DetectionsCsv(raw, result.flagged));
     WriteFileAtomic(out.path() / "config.yaml", DetectorConfigYaml(options));
     WriteFileAtomic(out.path() / "detection.json", json.dump(2) + "\n");

@@ -82,18 +82,28 @@ int64_t CsvReader::Int(std::size_t column) const {
 
 void CsvReader::Fail(const std::string& reason) const { throw InputError(Located(path_, line_, reason)); }
 
-CsvWriter::CsvWriter(const std::string& header) : header_(header), text_("#" + header + "\n") {}
+CsvWriter::CsvWriter(const std::string& header, std::string file)
+    : file_(std::move(file)), text_("#" + header + "\n") {
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = header.find(',', start)) != std::string::npos; start = comma + 1)
+    columns_.push_back(header.substr(start, comma - start));
+  columns_.push_back(header.substr(start));
+}
 
 void CsvWriter::Sep() {
-  if (row_started_) text_ += ',';
-  row_started_ = true;
+  if (column_ > 0) text_ += ',';
+  ++column_;
 }
 
 CsvWriter& CsvWriter::operator<<(double v) {
-  if (!std::isfinite(v))
-    throw InputError("cannot write the non-finite value " + FormatDouble(v) + " into row " +
-                     std::to_string(rows_ + 1) + " of the CSV '#" + header_.substr(0, header_.find(',')) +
-                     ",...': an input setting is out of range (vigil never writes inf or nan)");
+  if (!std::isfinite(v)) {
+    const std::string column =
+        column_ < columns_.size() ? columns_[column_] : "column " + std::to_string(column_ + 1);
+    throw InputError(
+        Located(file_, static_cast<int>(rows_) + 2,
+                column + ": cannot write the non-finite value " + FormatDouble(v) +
+                    " (vigil never writes inf or nan): an input value or setting is out of range"));
+  }
   Sep();
   text_ += FormatDouble(v);
   return *this;
@@ -114,7 +124,7 @@ CsvWriter& CsvWriter::operator<<(std::string_view text) {
 void CsvWriter::EndRow() {
   text_ += '\n';
   ++rows_;
-  row_started_ = false;
+  column_ = 0;
 }
 
 }  // namespace vigil

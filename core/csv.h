@@ -50,8 +50,10 @@ class CsvReader {
 // Accumulates rows in memory; written in one piece by WriteFileAtomic (core/output.h) or Str().
 class CsvWriter {
  public:
-  explicit CsvWriter(const std::string& header);  // header without the leading '#'
-  CsvWriter& operator<<(double v);                // InputError for inf / nan: never written
+  // `header` without the leading '#'; `file` names the file being written in errors.
+  CsvWriter(const std::string& header, std::string file);
+  // inf / nan are never written: InputError "file:line: column: cannot write the non-finite value ...".
+  CsvWriter& operator<<(double v);
   CsvWriter& operator<<(int64_t v);
   CsvWriter& operator<<(int v) { return *this << static_cast<int64_t>(v); }
   CsvWriter& operator<<(std::string_view text);
@@ -60,10 +62,11 @@ class CsvWriter {
 
  private:
   void Sep();
-  std::string header_;
+  std::vector<std::string> columns_;
+  std::string file_;
   std::string text_;
   std::size_t rows_ = 0;
-  bool row_started_ = false;
+  std::size_t column_ = 0;  // fields written in the current row
 };
 
 }  // namespace vigil

@@ -78,8 +78,8 @@ std::vector<GlitchRecord> OffsetGlitches(const std::vector<GlitchRecord>& record
   return out;
 }
 
-std::string ImuCsv(const ImuStream& imu) {
-  CsvWriter w(kImuHeader);
+std::string ImuCsv(const ImuStream& imu, const std::string& file) {
+  CsvWriter w(kImuHeader, file);
   for (const auto& s : imu) {
     w << s.t_ns;
     for (int i = 0; i < kNumImuAxes; ++i) w << s.axis(i);
@@ -89,6 +89,21 @@ std::string ImuCsv(const ImuStream& imu) {
 }
 
 ImuStream ReadImuCsv(const std::string& path) { return ReadImuCsv(ReadTextFile(path)); }
+
+void CheckCleanImuMatches(const ImuStream& imu, const ImuStream& clean, const std::string& imu_path,
+                          const std::string& clean_path) {
+  const std::string fix =
+      ": imu_clean.csv holds the glitch-free value of every imu.csv sample; regenerate "
+      "both together or remove imu_clean.csv";
+  if (clean.size() != imu.size())
+    throw InputError(clean_path + ": " + std::to_string(clean.size()) + " samples, but " + imu_path +
+                     " has " + std::to_string(imu.size()) + fix);
+  for (std::size_t t = 0; t < imu.size(); ++t)
+    if (clean[t].t_ns != imu[t].t_ns)
+      throw InputError(Located(clean_path, static_cast<int>(t) + 2,
+                               "timestamp " + std::to_string(clean[t].t_ns) + " differs from " + imu_path +
+                                   "'s " + std::to_string(imu[t].t_ns) + fix));
+}
 
 ImuStream ReadImuCsv(const TextFile& file) {
   CsvReader r(file, 7, "EuRoC imu0 layout: timestamp [ns], w_x, w_y, w_z, a_x, a_y, a_z");
@@ -113,8 +128,8 @@ ImuStream ReadImuCsv(const TextFile& file) {
   return imu;
 }
 
-std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches) {
-  CsvWriter w("timestamp [ns],axis,offset,kind");
+std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches, const std::string& file) {
+  CsvWriter w("timestamp [ns],axis,offset,kind", file);
   for (const auto& g : glitches) {
     w << g.t_ns << (IsTimingFault(g.kind) ? "t" : ImuAxisName(g.axis)) << g.offset << FaultKindName(g.kind);
     w.EndRow();
@@ -161,8 +176,8 @@ std::vector<GlitchRecord> ReadGlitchesCsv(const TextFile& file) {
   return out;
 }
 
-std::string GroundTruthCsv(const std::vector<NavState>& states) {
-  CsvWriter w(kGroundTruthHeader);
+std::string GroundTruthCsv(const std::vector<NavState>& states, const std::string& file) {
+  CsvWriter w(kGroundTruthHeader, file);
   for (const auto& s : states) {
     w << s.t_ns << s.p_W.x() << s.p_W.y() << s.p_W.z() << s.q_WB.w() << s.q_WB.x() << s.q_WB.y() << s.q_WB.z()
       << s.v_W.x() << s.v_W.y() << s.v_W.z() << s.b_g.x() << s.b_g.y() << s.b_g.z() << s.b_a.x() << s.b_a.y()
@@ -200,8 +215,8 @@ std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
   return out;
 }
 
-std::string LandmarksCsv(const std::vector<Landmark>& landmarks) {
-  CsvWriter w("id,x [m],y [m],z [m]");
+std::string LandmarksCsv(const std::vector<Landmark>& landmarks, const std::string& file) {
+  CsvWriter w("id,x [m],y [m],z [m]", file);
   for (const auto& l : landmarks) {
     w << l.id << l.p_W.x() << l.p_W.y() << l.p_W.z();
     w.EndRow();
@@ -228,8 +243,8 @@ std::vector<Landmark> ReadLandmarksCsv(const TextFile& file) {
   return out;
 }
 
-std::string FeaturesCsv(const std::vector<CameraFrame>& frames) {
-  CsvWriter w("timestamp [ns],id,u [px],v [px]");
+std::string FeaturesCsv(const std::vector<CameraFrame>& frames, const std::string& file) {
+  CsvWriter w("timestamp [ns],id,u [px],v [px]", file);
   for (const auto& f : frames) {
     for (const auto& o : f.features) {
       w << f.t_ns << o.id << o.uv_px.x() << o.uv_px.y();
@@ -315,14 +330,17 @@ std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_
   return times;
 }
 
-void WriteDataset(const fs::path& dir, const Dataset& d) {
+void WriteDataset(const fs::path& dir, const Dataset& d, const fs::path& shown_dir) {
   using namespace dataset_files;
-  WriteFileAtomic(dir / kImu, ImuCsv(d.imu));
-  WriteFileAtomic(dir / kImuClean, ImuCsv(d.imu_clean));
-  WriteFileAtomic(dir / kGlitches, GlitchesCsv(d.glitches));
-  WriteFileAtomic(dir / kGroundTruth, GroundTruthCsv(d.groundtruth));
-  WriteFileAtomic(dir / kLandmarks, LandmarksCsv(d.landmarks));
-  WriteFileAtomic(dir / kFeatures, FeaturesCsv(d.frames));
+  const auto shown = [&](const char* name) {
+    return ((shown_dir.empty() ? dir : shown_dir) / name).string();
+  };
+  WriteFileAtomic(dir / kImu, ImuCsv(d.imu, shown(kImu)));
+  WriteFileAtomic(dir / kImuClean, ImuCsv(d.imu_clean, shown(kImuClean)));
+  WriteFileAtomic(dir / kGlitches, GlitchesCsv(d.glitches, shown(kGlitches)));
+  WriteFileAtomic(dir / kGroundTruth, GroundTruthCsv(d.groundtruth, shown(kGroundTruth)));
+  WriteFileAtomic(dir / kLandmarks, LandmarksCsv(d.landmarks, shown(kLandmarks)));
+  WriteFileAtomic(dir / kFeatures, FeaturesCsv(d.frames, shown(kFeatures)));
   WriteFileAtomic(dir / kCamera, CameraYaml(d.camera));
 }
 
@@ -331,7 +349,10 @@ Dataset ReadDataset(const fs::path& dir) {
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": not a dataset directory");
   Dataset d;
   d.imu = ReadImuCsv((dir / kImu).string());
-  if (fs::exists(dir / kImuClean)) d.imu_clean = ReadImuCsv((dir / kImuClean).string());
+  if (fs::exists(dir / kImuClean)) {
+    d.imu_clean = ReadImuCsv((dir / kImuClean).string());
+    CheckCleanImuMatches(d.imu, d.imu_clean, (dir / kImu).string(), (dir / kImuClean).string());
+  }
   if (fs::exists(dir / kGlitches)) d.glitches = ReadGlitchesCsv((dir / kGlitches).string());
   d.groundtruth = ReadGroundTruthCsv((dir / kGroundTruth).string());
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());

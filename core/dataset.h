@@ -56,13 +56,18 @@ struct FeatureChecks {
   const std::vector<Landmark>* landmarks = nullptr;
 };
 
-// Serialization of each file (the text is what is written; reading parses a path).
-std::string ImuCsv(const ImuStream& imu);
-std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches);
-std::string GroundTruthCsv(const std::vector<NavState>& states);
-std::string LandmarksCsv(const std::vector<Landmark>& landmarks);
+// Serialization of each file (the text is what is written; reading parses a path). `file` names the file in
+// the error for a value that cannot be written (inf or nan).
+std::string ImuCsv(const ImuStream& imu, const std::string& file = dataset_files::kImu);
+std::string GlitchesCsv(const std::vector<GlitchRecord>& glitches,
+                        const std::string& file = dataset_files::kGlitches);
+std::string GroundTruthCsv(const std::vector<NavState>& states,
+                           const std::string& file = dataset_files::kGroundTruth);
+std::string LandmarksCsv(const std::vector<Landmark>& landmarks,
+                         const std::string& file = dataset_files::kLandmarks);
 // One row per observation; `frames` must be in time order.
-std::string FeaturesCsv(const std::vector<CameraFrame>& frames);
+std::string FeaturesCsv(const std::vector<CameraFrame>& frames,
+                        const std::string& file = dataset_files::kFeatures);
 std::string CameraYaml(const CameraModel& camera);
 
 // Every reader takes a path (a regular file, core/output.h) or a file already in memory (the fuzz targets).
@@ -74,6 +79,10 @@ std::vector<NavState> ReadGroundTruthCsv(const std::string& path);
 std::vector<NavState> ReadGroundTruthCsv(const TextFile& file);
 std::vector<Landmark> ReadLandmarksCsv(const std::string& path);
 std::vector<Landmark> ReadLandmarksCsv(const TextFile& file);
+// imu_clean.csv must hold the glitch-free value of every imu.csv sample: the same number of rows with the
+// same timestamps (else InputError naming both files, and the row where they part, and what to do).
+void CheckCleanImuMatches(const ImuStream& imu, const ImuStream& clean, const std::string& imu_path,
+                          const std::string& clean_path);
 // Groups rows by timestamp. Camera frames with no visible feature do not appear in the file; pass the
 // camera rate's frame times in `frame_times_ns` to get them back as empty frames (or leave it empty).
 // Ids must be >= 0 and distinct per frame; with `checks`, also the checks of FeatureChecks.
@@ -89,8 +98,10 @@ CameraModel ReadCameraYaml(const std::string& path);
 // t_k <= t_last_ns. The simulator takes its frames at these times and ReadDataset reconstructs them this way.
 std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_t t_last_ns);
 
-// Writes every file except config.yaml into `dir` (which must exist).
-void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset);
+// Writes every file except config.yaml into `dir` (which must exist); errors name the files as inside
+// `shown_dir` when given (the final output directory, when `dir` is its staging).
+void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset,
+                  const std::filesystem::path& shown_dir = {});
 // Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent). Ground
 // truth needs at least 2 rows; camera.yaml's rate over the IMU time span gives at most kMaxCameraFrames
 // frames.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace vigil::detectors {
 
@@ -21,7 +22,11 @@ DetectionMetrics EvaluateDetection(const ImuStream& raw, const DetectionResult& 
   if (result.flagged.size() != n || result.cleaned.size() != n)
     throw std::invalid_argument("EvaluateDetection: the result does not have one entry per input sample");
   if (!imu_clean.empty() && imu_clean.size() != n)
-    throw std::invalid_argument("EvaluateDetection: imu_clean does not have one sample per input sample");
+    throw std::invalid_argument(
+        "EvaluateDetection: the glitch-free stream (imu_clean.csv) has " + std::to_string(imu_clean.size()) +
+        " samples, but the input (imu.csv) has " + std::to_string(n) +
+        ": regenerate both together or remove imu_clean.csv (the dataset readers check this, "
+        "core/dataset.h CheckCleanImuMatches)");
 
   std::vector<char> glitched(n, 0);
   for (const GlitchRecord& g : glitches) {

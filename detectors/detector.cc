@@ -82,7 +82,7 @@ DetectionResult DetectAndMitigate(const DetectorOptions& options, const ImuStrea
 std::string DetectionsCsv(const ImuStream& imu, const std::vector<uint8_t>& flagged) {
   if (imu.size() != flagged.size())
     throw std::invalid_argument("DetectionsCsv: one flag per sample expected");
-  CsvWriter w("timestamp [ns],flagged");
+  CsvWriter w("timestamp [ns],flagged", "detections.csv");
   for (std::size_t t = 0; t < imu.size(); ++t) {
     w << imu[t].t_ns << static_cast<int>(flagged[t] != 0);
     w.EndRow();

@@ -124,8 +124,10 @@ TemplateLibrary BuildTemplates(const ImuStream& clean, const DtwOptions& options
   CheckGeometry(k, n, m, d, "detector.dtw.");
   const int available = static_cast<int>(clean.size()) / m;
   if (available < k + 1)
-    throw InputError("template library: " + std::to_string(available) + " clean slices of " +
-                     std::to_string(m) + " samples, need at least k + 1 = " + std::to_string(k + 1));
+    throw InputError("detector.dtw.templates: a template library of k = " + std::to_string(k) +
+                     " templates needs k + 1 = " + std::to_string(k + 1) + " clean slices of " +
+                     std::to_string(m) + " samples, the clean data has " + std::to_string(available) +
+                     ": lower detector.dtw.templates or give a longer clean recording");
   const int used = std::min(available, std::max(options.max_build_slices, k + 1));
   std::vector<int> indices(used);
   for (int s = 0; s < used; ++s)

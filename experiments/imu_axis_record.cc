@@ -47,8 +47,9 @@ ImuAxisRecord MakeImuAxisRecord(ImuAxis axis, const ImuStream& raw, const ImuStr
 std::string ImuAxisCsv(const ImuAxisRecord& record) {
   const std::string name = ImuAxisName(record.axis);
   const bool with_clean = !record.clean.empty();
-  CsvWriter w("timestamp [ns],raw " + name + (with_clean ? ",clean " + name : "") + ",mitigated " + name +
-              ",flagged");
+  CsvWriter w(
+      "timestamp [ns],raw " + name + (with_clean ? ",clean " + name : "") + ",mitigated " + name + ",flagged",
+      "imu_axis.csv");
   for (std::size_t i = 0; i < record.t_ns.size(); ++i) {
     w << record.t_ns[i] << record.raw[i];
     if (with_clean) w << record.clean[i];

@@ -1,5 +1,7 @@
 #include "experiments/run_config.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 #include "core/error.h"
@@ -17,22 +19,21 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   for (const auto& o : overrides) config::ApplyOverride(o, config);
   sim::ResolveRelativePaths(std::filesystem::current_path(),
                             &config.sim);  // --set paths: relative to the cwd
-  if (path.empty()) {
-    ValidateRunConfig(config, "--set");
-    return config;
-  }
+  const std::string origin = path.empty() ? "--set" : path;
   try {
-    ValidateRunConfig(config, path);
+    ValidateRunConfig(config, origin);
   } catch (const InputError& e) {
-    // "path: key: reason": name the line of the key, or the --set that gave it its value.
-    const std::string message = e.what(), prefix = path + ": ";
-    if (message.compare(0, prefix.size(), prefix) != 0) throw;
-    const std::string rest = message.substr(prefix.size());
-    const std::string key = rest.substr(0, rest.find(": "));
-    for (const auto& o : overrides)
-      if (o.compare(0, key.size() + 1, key + "=") == 0) throw InputError("--set " + rest);
-    const int line = config::KeyLine(config::LoadYamlFile(path), key);
-    if (line > 0) throw InputError(Located(path, line, rest));
+    // Name where the value at fault came from: the last --set of a key the error is about, else the line of
+    // such a key in the file.
+    std::string rest;
+    const std::vector<std::string> keys = KeysOfConfigError(e.what(), origin, &rest);
+    for (const std::string& key : keys)
+      for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+        if (o->compare(0, key.size() + 1, key + "=") == 0) throw InputError("--set " + *o + ": " + rest);
+    if (path.empty() || keys.empty()) throw;
+    const YAML::Node root = config::LoadYamlFile(path);
+    for (const std::string& key : keys)
+      if (const int line = config::KeyLine(root, key); line > 0) throw InputError(Located(path, line, rest));
     throw;
   }
   return config;
@@ -47,6 +48,30 @@ void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   } catch (const InputError& e) {
     throw InputError(origin + ": " + e.what());
   }
+}
+
+std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,
+                                           std::string* rest) {
+  const std::string prefix = origin + ": ";
+  if (message.compare(0, prefix.size(), prefix) != 0) return {};
+  *rest = message.substr(prefix.size());
+  const std::size_t colon = rest->find(": ");
+  std::vector<std::string> keys{rest->substr(0, colon)};
+  if (colon == std::string::npos) return keys;
+  const auto in_key = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+  };
+  const std::string reason = rest->substr(colon + 2);
+  for (std::size_t i = 0; i < reason.size();) {
+    std::size_t j = i;
+    while (j < reason.size() && in_key(reason[j])) ++j;
+    std::string word = reason.substr(i, j - i);
+    while (!word.empty() && word.back() == '.') word.pop_back();  // the end of a sentence
+    if (word.find('.') != std::string::npos && std::isalpha(static_cast<unsigned char>(word[0])))
+      keys.push_back(word);
+    i = std::max(j, i + 1);
+  }
+  return keys;
 }
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {

@@ -43,6 +43,13 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
 // Cross-field checks that a single key's bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateRunConfig(const RunConfig& config, const std::string& origin);
 
+// The keys a ValidateRunConfig message "<origin>: key: reason" is about, to find where their values came
+// from: the key at fault first, then the dotted keys its reason names (a cross-key check such as
+// "imu.rate_hz: must be at least camera.rate_hz"). Empty when `message` does not start with "<origin>: ";
+// else `rest` gets "key: reason".
+std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,
+                                           std::string* rest);
+
 // The files a run with `config` reads besides its config file (waypoints, DTW templates): what its output
 // must not overwrite (core/output.h RefuseOutputOverInputs).
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
@@ -13,6 +14,7 @@
 #include "core/error.h"
 #include "core/output.h"
 #include "core/staging.h"
+#include "core/thread_handoff.h"
 #include "experiments/progress.h"
 
 namespace vigil::experiments {
@@ -62,16 +64,26 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
   std::atomic<std::size_t> executed{0}, resumed{0};
   ProgressBar progress(run_ids.size(), options.progress);
 
+  // Items pass as run indices (carried inside the token itself, not in a buffer of libtbb's); a run's result
+  // waits in finished[index], handed from `work` to `sink` on its own address; a serial filter's state is
+  // handed from one call to the next on one address; `handoff` hands what was written before the pipeline to
+  // its bodies (core/thread_handoff.h: what TSan cannot see inside libtbb).
+  const int handoff = 0;
+  std::vector<std::unique_ptr<Finished>> finished(run_ids.size());
   std::size_t next = 0;
   auto source = [&](tbb::flow_control& fc) -> std::size_t {
-    if (next >= run_ids.size()) {
-      fc.stop();
-      return 0;
-    }
-    return next++;
+    HandOffAcquire(&handoff);
+    HandOffAcquire(&next);
+    const bool stop = next >= run_ids.size();
+    const std::size_t index = stop ? 0 : next++;
+    HandOffRelease(&next);  // after the last access to anything the caller owns
+    if (stop) fc.stop();
+    return index;
   };
-  auto work = [&](std::size_t index) -> std::shared_ptr<Finished> {
-    auto done = std::make_shared<Finished>();
+  auto work = [&](std::size_t index) -> std::size_t {
+    HandOffAcquire(&handoff);
+    finished[index] = std::make_unique<Finished>();
+    Finished* done = finished[index].get();
     done->index = index;
     const fs::path final_metrics = RunMetricsPath(sweep_dir, run_ids[index]);
     std::error_code ec;
@@ -79,7 +91,8 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
       done->metrics = nlohmann::json::parse(ReadFile(final_metrics), nullptr, false);
       ++resumed;
       progress.Finished(true, IsFailed(done->metrics));
-      return done;
+      HandOffRelease(&finished[index]);
+      return index;
     }
     StagedDirectory staging(RunDirectory(sweep_dir, run_ids[index]), /*force=*/true);
     try {
@@ -93,24 +106,31 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
     staging.Commit();
     ++executed;
     progress.Finished(false, IsFailed(done->metrics));
-    return done;
+    HandOffRelease(&finished[index]);
+    return index;
   };
   std::size_t failed = 0;
-  auto sink = [&](std::shared_ptr<Finished> done) {
+  auto sink = [&](std::size_t index) {
+    HandOffAcquire(&finished[index]);
+    HandOffAcquire(&failed);
+    const std::unique_ptr<Finished> done = std::move(finished[index]);
     if (done->metrics.is_discarded())
       throw std::runtime_error(RunMetricsPath(sweep_dir, run_ids[done->index]).string() + ": not valid JSON");
     if (IsFailed(done->metrics)) ++failed;
     if (on_result) on_result(done->index, done->metrics);
+    HandOffRelease(&failed);
   };
 
   tbb::task_arena arena(threads);
+  HandOffRelease(&handoff);
   arena.execute([&] {
-    tbb::parallel_pipeline(
-        static_cast<std::size_t>(4 * threads),
-        tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
-            tbb::make_filter<std::size_t, std::shared_ptr<Finished>>(tbb::filter_mode::parallel, work) &
-            tbb::make_filter<std::shared_ptr<Finished>, void>(tbb::filter_mode::serial_in_order, sink));
+    tbb::parallel_pipeline(static_cast<std::size_t>(4 * threads),
+                           tbb::make_filter<void, std::size_t>(tbb::filter_mode::serial_in_order, source) &
+                               tbb::make_filter<std::size_t, std::size_t>(tbb::filter_mode::parallel, work) &
+                               tbb::make_filter<std::size_t, void>(tbb::filter_mode::serial_in_order, sink));
   });
+  HandOffAcquire(&next);  // the last source call
+  HandOffAcquire(&failed);
   progress.Close();
   outcome.executed = executed;
   outcome.resumed = resumed;

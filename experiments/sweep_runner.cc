@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/output.h"
 #include "core/staging.h"
+#include "core/thread_handoff.h"
 #include "experiments/detection_stage.h"
 #include "experiments/results_csv.h"
 #include "experiments/tables.h"
@@ -35,13 +36,28 @@ SweepTemplates BuildSweepTemplates(const SweepSpec& spec, const std::vector<RunC
     cell_key[c] = static_cast<int>(it->second);
   }
   std::vector<std::shared_ptr<const detectors::TemplateLibrary>> libraries(sources.size());
+  std::vector<std::string> errors(sources.size());
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  const int handoff = 0;  // hands what was written before to the bodies, and each body's k back (TSan)
+  HandOffRelease(&handoff);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t k) {
-      libraries[k] = std::make_shared<detectors::TemplateLibrary>(BuildTemplatesFromGlitchFreeSimulation(
-          sources[k]->sim, sources[k]->detector.dtw, spec.template_seed));
+      HandOffAcquire(&handoff);
+      try {
+        libraries[k] = std::make_shared<detectors::TemplateLibrary>(BuildTemplatesFromGlitchFreeSimulation(
+            sources[k]->sim, sources[k]->detector.dtw, spec.template_seed));
+      } catch (const InputError& e) {
+        errors[k] = e.what();
+      }
+      HandOffRelease(&libraries[k]);
     });
   });
+  for (std::size_t k = 0; k < sources.size(); ++k) HandOffAcquire(&libraries[k]);
+  // A library that cannot be built: the error names the sweep-file line of the first cell that needs it.
+  const std::vector<SweepCell> cells = EnumerateCells(spec);
+  for (std::size_t c = 0; c < cell_configs.size(); ++c)
+    if (cell_key[c] >= 0 && !errors[static_cast<std::size_t>(cell_key[c])].empty())
+      ThrowCellError(spec, cells[c], errors[static_cast<std::size_t>(cell_key[c])]);
   SweepTemplates out;
   out.built = libraries.size();
   out.per_cell.resize(cell_configs.size());

@@ -375,15 +375,53 @@ std::string RunId(const SweepSpec& spec, const SweepCell& cell, uint64_t seed) {
   return id + spec.methods[cell.method].label + "-" + s;
 }
 
+namespace {
+
+// The overrides that make a cell's configuration, in the order they apply: set, axes, method.
+std::vector<const SweepOverride*> CellOverrides(const SweepSpec& spec, const SweepCell& cell) {
+  std::vector<const SweepOverride*> applied;
+  for (const auto& o : spec.set) applied.push_back(&o);
+  for (std::size_t a = 0; a < spec.axes.size(); ++a)
+    for (const auto& o : spec.axes[a].settings[cell.setting[a]].overrides) applied.push_back(&o);
+  for (const auto& o : spec.methods[cell.method].overrides) applied.push_back(&o);
+  return applied;
+}
+
+std::string CellOrigin(const SweepSpec& spec, const SweepCell& cell) {
+  return spec.path + " (cell " + CellGroupLabel(spec, cell) + "-" + spec.methods[cell.method].label + ")";
+}
+
+}  // namespace
+
+void ThrowCellError(const SweepSpec& spec, const SweepCell& cell, const std::string& message) {
+  // Name the sweep-file line that set a key the error is about (the last one applied), else the base's.
+  const std::string origin = CellOrigin(spec, cell), in_cell = origin.substr(spec.path.size());
+  std::string rest;
+  const std::vector<std::string> keys = KeysOfConfigError(origin + ": " + message, origin, &rest);
+  const std::vector<const SweepOverride*> applied = CellOverrides(spec, cell);
+  for (const std::string& key : keys)
+    for (auto o = applied.rbegin(); o != applied.rend(); ++o)
+      if (key == (*o)->key || key.rfind((*o)->key + ".", 0) == 0)  // the key, or a section holding it
+        throw InputError(Located(spec.path, (*o)->line, rest + in_cell));
+  const YAML::Node base = config::LoadYamlFile(spec.base.string());
+  for (const std::string& key : keys)
+    if (const int line = config::KeyLine(base, key); line > 0)
+      throw InputError(Located(spec.base.string(), line, rest + in_cell));
+  throw InputError(origin + ": " + message);
+}
+
 RunConfig ResolveCellConfig(const SweepSpec& spec, const SweepCell& cell) {
   RunConfig config = LoadRunConfig(spec.base.string());
-  for (const auto& o : spec.set) Apply(spec.path, o, &config);
-  for (std::size_t a = 0; a < spec.axes.size(); ++a)
-    for (const auto& o : spec.axes[a].settings[cell.setting[a]].overrides) Apply(spec.path, o, &config);
-  for (const auto& o : spec.methods[cell.method].overrides) Apply(spec.path, o, &config);
+  for (const SweepOverride* o : CellOverrides(spec, cell)) Apply(spec.path, *o, &config);
   sim::ResolveRelativePaths(fs::path(spec.path).parent_path(), &config.sim);
-  ValidateRunConfig(config, spec.path + " (cell " + CellGroupLabel(spec, cell) + "-" +
-                                spec.methods[cell.method].label + ")");
+  const std::string origin = CellOrigin(spec, cell);
+  try {
+    ValidateRunConfig(config, origin);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.compare(0, origin.size() + 2, origin + ": ") != 0) throw;
+    ThrowCellError(spec, cell, message.substr(origin.size() + 2));
+  }
   return config;
 }
 

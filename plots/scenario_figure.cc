@@ -1,4 +1,6 @@
 // Figure 1: the simulated scenario (trajectory and landmarks) in three projections and a 3-D view.
+#include <cstdint>
+
 #include "plots/figures.h"
 #include "plots/style.h"
 
@@ -9,9 +11,9 @@ Color MethodColor(const std::string& method) {
   if (method == "trunc") return PaletteColor(0);
   if (method == "dtw") return PaletteColor(2);
   if (method == "hampel") return PaletteColor(3);
-  int hash = 0;
+  uint32_t hash = 0;  // unsigned: the hash wraps around (a signed int overflowed: UBSan)
   for (char c : method) hash = hash * 31 + static_cast<unsigned char>(c);
-  return PaletteColor(4 + (hash & 3));
+  return PaletteColor(4 + static_cast<int>(hash & 3));
 }
 
 Figure ScenarioFigure(const ScenarioData& data) {

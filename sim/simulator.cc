@@ -95,7 +95,7 @@ Dataset SimulateToDirectory(const SimOptions& options, uint64_t seed, const std:
   StagedDirectory staged(dir, force);  // refuses a non-empty `dir` before any work
   Dataset d = Simulate(options, seed);
   WriteFileAtomic(staged.path() / dataset_files::kConfig, config_yaml);
-  WriteDataset(staged.path(), d);
+  WriteDataset(staged.path(), d, dir);  // errors name the output, not its staging
   if (options.images.enabled) WriteImages(options, seed, d, staged.path());
   staged.Commit();
   return d;

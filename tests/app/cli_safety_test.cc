@@ -62,6 +62,12 @@ class Cli : public ::testing::Test {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   }
   void ExpectDatasetIntact() { EXPECT_EQ(Listing(ds_), listing_); }
+  // A copy of the dataset at tmp/NAME, to spoil.
+  std::string CopyOfDataset(const std::string& name) {
+    const fs::path copy = tmp_.path() / name;
+    fs::copy(ds_, copy, fs::copy_options::recursive);
+    return copy.string();
+  }
 
   TempDir tmp_;
   std::string config_, ds_, listing_;
@@ -78,9 +84,8 @@ TEST_F(Cli, CleanNeverWritesOverItsDataset) {
                   "contains the input");
   }
   ExpectDatasetIntact();
-  EXPECT_EQ(
-      Vigil(tmp_, "clean " + ds_ + " -o " + tmp_.path().string() + "/cleaned --detector hampel").status,
-      0);
+  EXPECT_EQ(Vigil(tmp_, "clean " + ds_ + " -o " + tmp_.path().string() + "/cleaned --detector hampel").status,
+            0);
 }
 
 TEST_F(Cli, RunNeverWritesOverItsDatasetOrConfig) {
@@ -180,6 +185,60 @@ TEST_F(Cli, DuplicateKeysAndBlockScalarsGiveOneLineErrors) {
                 "dup.yaml:3: seed: duplicate key (first at line 1)");
   ExpectRefused("config " + tmp_.File("block.yaml", "seed: |\n  5\n  6\n"), "block.yaml:1: seed:");
   ExpectRefused("config " + tmp_.File("nul.yaml", std::string("seed: 5\0x\n", 10)), "");
+}
+
+TEST_F(Cli, AnImuCleanOfOtherSamplesNamesBothFilesAndWhatToDo) {
+  const std::string ds = CopyOfDataset("short_clean");
+  const std::string clean = ds + "/imu_clean.csv", text = ReadFile(clean);
+  std::size_t end = 0;  // after the header and 10 samples
+  for (int line = 0; line < 11; ++line) end = text.find('\n', end) + 1;
+  WriteFileAtomic(clean, text.substr(0, end));
+  const std::string reason = clean + ": 10 samples, but " + ds + "/imu.csv has ";
+  ExpectRefused("run " + config_ + " --dataset " + ds + " -o " + tmp_.path().string() + "/r", reason);
+  ExpectRefused("clean " + ds + " -o " + tmp_.path().string() + "/c --detector hampel", reason);
+  ExpectRefused("clean " + ds + " -o " + tmp_.path().string() + "/c --detector hampel",
+                "regenerate both together or remove imu_clean.csv");
+  EXPECT_FALSE(fs::exists(tmp_.path() / "r"));
+  EXPECT_FALSE(fs::exists(tmp_.path() / "c"));
+}
+
+TEST_F(Cli, ACrossKeyErrorFromASetNamesTheSet) {
+  ExpectRefused("simulate " + config_ + " --set imu.rate_hz=10 -o " + tmp_.path().string() + "/s",
+                "vigil: error: --set imu.rate_hz=10: imu.rate_hz: must be at least camera.rate_hz");
+  ExpectRefused("run " + config_ + " --set camera.rate_hz=500 -o " + tmp_.path().string() + "/r",
+                "vigil: error: --set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
+}
+
+TEST_F(Cli, AnOutOfRangeNoiseDensityWritesNoInfAndNamesTheFileLineAndColumn) {
+  const std::string loud =
+      tmp_.File("loud.yaml", "duration_s: 2\nimu:\n  noise:\n    accel_noise_density: 1e308\n");
+  const std::string out = tmp_.path().string() + "/loud";
+  ExpectRefused("simulate " + loud + " -o " + out,
+                out + "/imu.csv:2: a_RS_S_x [m s^-2]: cannot write the non-finite");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(Cli, AFifoOrAHugePixelInTheDatasetIsRefused) {
+  const std::string fifo_ds = CopyOfDataset("fifo");
+  fs::remove(fifo_ds + "/features.csv");
+  ASSERT_EQ(::mkfifo((fifo_ds + "/features.csv").c_str(), 0600), 0);
+  ExpectRefused("run " + config_ + " --dataset " + fifo_ds + " -o " + tmp_.path().string() + "/r",
+                fifo_ds + "/features.csv: not a regular file");  // returns instead of blocking
+  const std::string far = CopyOfDataset("far");
+  std::string features = ReadFile(far + "/features.csv");
+  const std::size_t row = features.find('\n') + 1, u = features.find(',', features.find(',', row) + 1) + 1;
+  features.replace(u, features.find(',', u) - u, "1e308");
+  WriteFileAtomic(far + "/features.csv", features);
+  ExpectRefused("run " + config_ + " --dataset " + far + " -o " + tmp_.path().string() + "/r",
+                far + "/features.csv:2: pixel (1e+308, ");
+  EXPECT_FALSE(fs::exists(tmp_.path() / "r"));
+}
+
+TEST_F(Cli, AHugeSeedCountIsRefusedBeforeAnyWork) {
+  const std::string sweep =
+      tmp_.File("many.yaml", "base: config.yaml\nmethods: {original: none}\nseeds: {count: 100000000}\n");
+  ExpectRefused("sweep " + sweep + " -o " + tmp_.path().string() + "/s --quiet", "many.yaml:3: seeds");
+  EXPECT_FALSE(fs::exists(tmp_.path() / "s"));
 }
 
 }  // namespace

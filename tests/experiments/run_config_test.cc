@@ -37,7 +37,7 @@ TEST(RunConfig, BadKeysAreNamed) {
   EXPECT_EQ(InputErrorOf([] {
               LoadRunConfig("", {"glitch.enabled=true", "glitch.axes=[]"});
             }),
-            "--set: glitch.axes: must name at least one axis when glitch.enabled is true");
+            "--set glitch.axes=[]: glitch.axes: must name at least one axis when glitch.enabled is true");
 }
 
 TEST(RunConfig, ShippedConfigsLoadAndEveryKeyIsDocumented) {
@@ -58,11 +58,34 @@ TEST(RunConfig, CrossKeyChecksNameTheLineOrTheSet) {
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path); }),
             path + ":3: imu.rate_hz: must be at least camera.rate_hz");
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"imu.rate_hz=25"}); }),
-            "--set imu.rate_hz: must be at least camera.rate_hz");
+            "--set imu.rate_hz=25: imu.rate_hz: must be at least camera.rate_hz");
+  // The key at fault is not in the file: the line of the other key its reason names.
+  const std::string fast = dir.File("f.yaml", "seed: 1\ncamera:\n  rate_hz: 1e12\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(fast); }),
+            fast + ":3: imu.rate_hz: must be at least camera.rate_hz");
   const std::string tbc = dir.File("t.yaml", "camera:\n  T_BC: [1, 2]\n");
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(tbc); }).rfind(tbc + ":2: camera.T_BC: ", 0), 0u);
   const std::string axes = dir.File("a.yaml", "glitch:\n  enabled: true\n  axes: [az, az]\n");
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(axes); }), axes + ":3: glitch.axes: axis az listed twice");
+}
+
+TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
+  TempDir dir;
+  const std::string path = dir.File("c.yaml", "seed: 1\ncamera:\n  rate_hz: 20\n");
+  // The key at fault was set on the command line: no line of the file is to blame.
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"imu.rate_hz=10"}); }),
+            "--set imu.rate_hz=10: imu.rate_hz: must be at least camera.rate_hz");
+  // The other key of the check was set on the command line: that --set, not the file's default.
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"camera.rate_hz=500"}); }),
+            "--set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
+  // The last --set of a key is the one in effect.
+  EXPECT_EQ(InputErrorOf([&] {
+              LoadRunConfig(path, {"imu.rate_hz=300", "imu.rate_hz=5"});
+            }),
+            "--set imu.rate_hz=5: imu.rate_hz: must be at least camera.rate_hz");
+  // Without a file.
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig("", {"camera.rate_hz=500"}); }),
+            "--set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
 }
 
 }  // namespace

@@ -458,8 +458,12 @@ TEST(SweepRunner, AnInvalidPlanWritesNothing) {
   // a 4 s scenario), are refused before the directory is created.
   dir.File("huge.yaml", "base: base.yaml\nset: {duration_s: 1e9}\nmethods: {original: none}\nseeds: [1]\n");
   dir.File("k500.yaml", "base: base.yaml\nmethods: {dtw: {type: dtw, dtw: {templates: 500}}}\nseeds: [1]\n");
-  for (const auto& [file, why] : std::vector<std::pair<std::string, std::string>>{
-           {"huge.yaml", "duration_s"}, {"k500.yaml", "clean slices"}}) {
+  for (const auto& [name, why] : std::vector<std::pair<std::string, std::string>>{
+           {"huge.yaml", "huge.yaml:2: duration_s: "},
+           {"k500.yaml",
+            "k500.yaml:2: detector.dtw.templates: a template library of k = 500 templates needs "
+            "k + 1 = 501 clean slices"}}) {
+    const std::string file = name;  // a lambda may not capture a structured binding in C++17 (clang)
     const fs::path out = dir.path() / (file + ".out");
     EXPECT_NE(InputErrorOf([&] {
                 RunSweep(LoadSweepSpec((dir.path() / file).string()), out, {}, SlowFakeExecutor(0));

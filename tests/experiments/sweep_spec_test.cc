@@ -130,6 +130,23 @@ TEST(SweepSpec, SizesAreCheckedBeforeAnythingIsAllocated) {
             f + ":4: seeds: duplicate key (first at line 3); keep one");
 }
 
+TEST(SweepSpec, ACellsCrossKeyErrorNamesTheSweepLineThatSetTheKey) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\ncamera:\n  rate_hz: 20\n");
+  const auto error = [&](const std::string& body) {
+    const std::string p = dir.File("cell.yaml", "base: base.yaml\n" + body);
+    return InputErrorOf([&] {
+      const SweepSpec spec = LoadSweepSpec(p);
+      ResolveCellConfig(spec, EnumerateCells(spec).front());
+    });
+  };
+  const std::string f = (dir.path() / "cell.yaml").string();
+  EXPECT_EQ(error("set:\n  imu.rate_hz: 10\nmethods: {original: none}\nseeds: [1]\n"),
+            f + ":3: imu.rate_hz: must be at least camera.rate_hz (cell all-original)");
+  EXPECT_EQ(error("methods: {original: none}\naxes:\n  camera.rate_hz: [500]\nseeds: [1]\n"),
+            f + ":4: imu.rate_hz: must be at least camera.rate_hz (cell rate_hz_500-original)");
+}
+
 TEST(SweepSpec, ShippedSweepsLoadAndResolve) {
   const SweepSpec paper = LoadSweepSpec(std::string(VIGIL_SOURCE_DIR) + "/configs/paper_sweep.yaml");
   EXPECT_EQ(paper.run_count(), 3u * 6u * 10u);
