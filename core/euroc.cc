@@ -145,7 +145,7 @@ std::string EurocCameraSensorYaml(const CameraModel& c) {
 std::string EurocImageName(int64_t t_ns) { return std::to_string(t_ns) + ".png"; }
 
 std::string EurocImageListCsv(const std::vector<int64_t>& times_ns) {
-  CsvWriter w("timestamp [ns],filename");
+  CsvWriter w("timestamp [ns],filename", "mav0/cam0/data.csv");
   for (int64_t t : times_ns) {
     w << t << EurocImageName(t);
     w.EndRow();
