@@ -12,29 +12,15 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
+#include "tests/app/vigil_cli.h"
 #include "tests/core/test_util.h"
 
 namespace vigil {
 namespace {
 namespace fs = std::filesystem;
+using testing::CliResult;
 using testing::TempDir;
-
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-// Runs `vigil ARGS` (a shell word list) with stdout discarded; returns its exit status and stderr.
-Result Vigil(const TempDir& tmp, const std::string& args) {
-  const fs::path err = tmp.path() / "stderr.txt";
-  const std::string command = std::string(VIGIL_BINARY) + " " + args + " >/dev/null 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.err = ReadFile(err);
-  fs::remove(err);
-  return r;
-}
+using testing::Vigil;
 
 // A short simulated dataset (2 s of the paper scenario) at tmp/ds, with its config at tmp/config.yaml.
 class Cli : public ::testing::Test {
@@ -56,7 +42,7 @@ class Cli : public ::testing::Test {
     return s;
   }
   void ExpectRefused(const std::string& args, const std::string& reason) {
-    const Result r = Vigil(tmp_, args);
+    const CliResult r = Vigil(tmp_, args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_NE(r.err.find(reason), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
@@ -165,7 +151,7 @@ TEST_F(Cli, BadSeedsAreRefusedNotClamped) {
   ExpectRefused("config " + config_ + " --seed 9223372036854775808", "--seed: expected an integer");
   ExpectRefused("config " + config_ + " --seed 18446744073709551616", "--seed: expected an integer");
   ExpectRefused("config " + config_ + " --seed -1", "--seed");
-  const Result r = Vigil(tmp_, "config " + config_ + " --seed 9223372036854775807");
+  const CliResult r = Vigil(tmp_, "config " + config_ + " --seed 9223372036854775807");
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
@@ -262,7 +248,7 @@ class EurocCli : public ::testing::Test {
   }
   // `vigil run` on the folder: exit 2, one line containing `reason`, no output directory.
   void ExpectRunRefused(const std::string& reason) {
-    const Result r = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+    const CliResult r = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
@@ -282,7 +268,7 @@ class EurocCli : public ::testing::Test {
 };
 
 TEST_F(EurocCli, RunsAsPublishedWithAndWithoutGroundTruth) {
-  const Result with = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+  const CliResult with = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
   ASSERT_EQ(with.status, 0) << with.err;
   EXPECT_NE(ReadFile(out_ / "metrics.json").find("\"ate\""), std::string::npos);
   EXPECT_TRUE(fs::exists(out_ / "stamped_groundtruth.txt"));
@@ -290,11 +276,11 @@ TEST_F(EurocCli, RunsAsPublishedWithAndWithoutGroundTruth) {
   const fs::path out2 = tmp_.path() / "out2";
   // Ground-truth initialization (the config's default) cannot work without it: a clear error.
   const std::string mav0 = (eu_ / "mav0").string();
-  const Result init = Vigil(tmp_, "run " + config_ + " --dataset " + mav0 + " -o " + out2.string());
+  const CliResult init = Vigil(tmp_, "run " + config_ + " --dataset " + mav0 + " -o " + out2.string());
   EXPECT_EQ(init.status, 2);
   EXPECT_NE(init.err.find("groundtruth initialization needs ground truth"), std::string::npos) << init.err;
   // VINS initialization: the estimate is written, the metrics skipped (status from the estimator alone).
-  const Result without = Vigil(
+  const CliResult without = Vigil(
       tmp_, "run " + config_ + " --set estimator.init=vins --dataset " + mav0 + " -o " + out2.string());
   EXPECT_TRUE(without.status == 0 || without.status == 1) << without.err;
   EXPECT_NE(without.err.find("skipped: the dataset has no ground truth"), std::string::npos) << without.err;
@@ -328,7 +314,7 @@ TEST_F(EurocCli, SensorYamlWithoutIntrinsicsIsRefused) {
 TEST_F(EurocCli, ImuOnlyCleansButDoesNotRun) {
   fs::remove_all(eu_ / "mav0" / "cam0");
   ExpectRunRefused("IMU only");
-  const Result clean = Vigil(tmp_, "clean " + eu_.string() + " -o " + out_.string() + " --detector hampel");
+  const CliResult clean = Vigil(tmp_, "clean " + eu_.string() + " -o " + out_.string() + " --detector hampel");
   EXPECT_EQ(clean.status, 0) << clean.err;
   EXPECT_TRUE(fs::exists(out_ / "imu.csv"));
 }
@@ -336,7 +322,7 @@ TEST_F(EurocCli, ImuOnlyCleansButDoesNotRun) {
 // Without features.csv the run tracks the images with the visual front-end itself.
 TEST_F(EurocCli, ImagesWithoutFeaturesAreTrackedByTheFrontEnd) {
   fs::remove(eu_ / "features.csv");
-  const Result r = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+  const CliResult r = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
   EXPECT_NE(r.status, 2) << r.err;
   EXPECT_NE(ReadFile(out_ / "metrics.json").find("\"frontend\""), std::string::npos);
 }

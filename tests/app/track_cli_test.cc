@@ -16,29 +16,16 @@
 #include "core/dataset.h"
 #include "core/euroc.h"
 #include "core/output.h"
+#include "tests/app/vigil_cli.h"
 #include "tests/core/test_util.h"
 #include "tests/frontend/synthetic_images.h"
 
 namespace vigil {
 namespace {
 namespace fs = std::filesystem;
+using testing::CliResult;
 using testing::TempDir;
-
-struct Result {
-  int status = -1;
-  std::string err;
-};
-
-Result Vigil(const TempDir& tmp, const std::string& args) {
-  const fs::path err = tmp.path() / "stderr.txt";
-  const std::string command = std::string(VIGIL_BINARY) + " " + args + " >/dev/null 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.err = ReadFile(err);
-  fs::remove(err);
-  return r;
-}
+using testing::Vigil;
 
 constexpr int kImages = 8;
 constexpr int64_t kStart_ns = 1'403'636'579'763'555'584LL;  // EuRoC-like absolute timestamps
@@ -81,7 +68,7 @@ class TrackCli : public ::testing::Test {
 
 TEST_F(TrackCli, WritesTracksStatisticsAndConfig) {
   const fs::path out = tmp_.path() / "tracks";
-  const Result r = Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string() +
+  const CliResult r = Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string() +
                                    " --set frontend.max_features=60 --set frontend.backward_check=true");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("vigil track: 8 images, 8 frames"), std::string::npos) << r.err;
@@ -101,7 +88,7 @@ TEST_F(TrackCli, WritesTracksStatisticsAndConfig) {
   // Again: refused without --force, replaced with it; never over its input.
   EXPECT_EQ(Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string()).status, 2);
   EXPECT_EQ(Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string() + " --force").status, 0);
-  const Result inside = Vigil(tmp_, "track " + dataset_.string() + " -o " + (dataset_ / "t").string());
+  const CliResult inside = Vigil(tmp_, "track " + dataset_.string() + " -o " + (dataset_ / "t").string());
   EXPECT_EQ(inside.status, 2);
   EXPECT_NE(inside.err.find("lies inside the input"), std::string::npos) << inside.err;
 }
@@ -124,7 +111,7 @@ TEST_F(TrackCli, BadImagesAreOneLineErrorsAndNothingIsWritten) {
   for (const Case& c : cases) {
     SetUp();  // a fresh dataset
     c.damage();
-    const Result r = Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string());
+    const CliResult r = Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string());
     EXPECT_EQ(r.status, 2) << c.what << ": " << r.err;
     EXPECT_NE(r.err.find(list + c.expected), std::string::npos) << c.what << ": " << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
