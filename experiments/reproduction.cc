@@ -27,10 +27,8 @@ struct PooledRe {
   std::size_t groups_ok = 0;
 };
 
-std::string Num(double v, int decimals = 3) { return FormatCell(v, decimals); }
-
 std::string Interval(const PairedTest& t) {
-  return Num(t.mean_diff) + " [" + Num(t.ci_low) + ", " + Num(t.ci_high) + "]";
+  return FormatCell(t.mean_diff) + " [" + FormatCell(t.ci_low) + ", " + FormatCell(t.ci_high) + "]";
 }
 
 bool HasMethod(const SeedResults& r, const std::string& method) {
@@ -47,7 +45,7 @@ std::string ClaimRow(const ClaimResult& c, const std::string& label) {
     failures =
         " (failed runs left out: " + std::to_string(c.failed_a) + " / " + std::to_string(c.failed_b) + ")";
   return "| " + label + " | " + c.spec.text + " | " + c.spec.paper + " | " + SideLabel(c.spec, true) + " " +
-         Num(c.test.mean_a) + " vs " + SideLabel(c.spec, false) + " " + Num(c.test.mean_b) + " | " +
+         FormatCell(c.test.mean_a) + " vs " + SideLabel(c.spec, false) + " " + FormatCell(c.test.mean_b) + " | " +
          Interval(c.test) + " | " + std::to_string(c.test.pairs) + failures + " | **" +
          VerdictName(c.verdict) + "** |\n";
 }
@@ -164,7 +162,7 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
        "value with clamping; DTW on raw slices replaced by the best template; no detection).\n\n";
   s += "Test: each claim says A has a lower error than B. Per seed, d = A - B (runs of the same seed share "
        "their simulated recording); the interval is the " +
-       Num(100 * options.level, 0) + " % percentile bootstrap interval of the mean of d (" +
+       FormatCell(100 * options.level, 0) + " % percentile bootstrap interval of the mean of d (" +
        std::to_string(options.resamples) +
        " resamples of the seeds, seeded, so it is the same on every machine). Verdict: **holds** when the "
        "whole interval is below 0, **does not hold** when it is wholly above 0, **inconclusive** when it "
@@ -199,8 +197,8 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
         if (!changed) continue;
         const ClaimResult r = EvaluateClaim(v, results, options);
         if (r.verdict == Verdict::kHolds) holds_with[c.id].push_back(label);
-        s += "| " + c.id + " | " + label + " | " + SideLabel(v, true) + " " + Num(r.test.mean_a) + " vs " +
-             SideLabel(v, false) + " " + Num(r.test.mean_b) + " | " + Interval(r.test) + " | " +
+        s += "| " + c.id + " | " + label + " | " + SideLabel(v, true) + " " + FormatCell(r.test.mean_a) + " vs " +
+             SideLabel(v, false) + " " + FormatCell(r.test.mean_b) + " | " + Interval(r.test) + " | " +
              std::to_string(r.test.pairs) + " | " + VerdictName(r.verdict) + " |\n";
       }
     s += "\n";
@@ -268,9 +266,9 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
         for (const char* m : kPaperMethods)
           if (std::string(g) != "noise_50_10" || std::string(m) != "original")
             other = std::max(other, mean_ate(r, g, m).mean);
-      s += "| " + model + " | " + Num(st.mean, 2) + " | " + Num(st.max, 2) + " | " +
+      s += "| " + model + " | " + FormatCell(st.mean, 2) + " | " + FormatCell(st.max, 2) + " | " +
            std::to_string(r.Failed("noise_50_10", "original")) + " | " + (st.mean >= 6.0 ? "yes" : "no") +
-           " | " + Num(other, 2) + " | " + (other <= 0.32 ? "yes" : "no") + " |\n";
+           " | " + FormatCell(other, 2) + " | " + (other <= 0.32 ? "yes" : "no") + " |\n";
     };
     collapse_row("matched", results);
     for (const auto& [model, r] : noise_models) collapse_row(model, r);

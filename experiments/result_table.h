@@ -16,7 +16,7 @@ struct ResultTable {
 
 // A value with `decimals` fixed decimals, or "n/a" when it is not finite (every table cell is written this
 // way).
-std::string FormatCell(double value, int decimals);
+std::string FormatCell(double value, int decimals = 3);
 
 std::string TableMarkdown(const ResultTable& table);  // a pipe table preceded by "**title**"
 std::string TableCsv(const ResultTable& table);       // "#corner,col,..." then one line per row

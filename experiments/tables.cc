@@ -43,8 +43,6 @@ ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::stri
   return t;
 }
 
-std::string Num(double v) { return FormatCell(v, 3); }
-
 }  // namespace
 
 ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>& methods) {
@@ -113,8 +111,8 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
       const ErrorStatistics st = ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
            std::to_string(c.ok()) + " | " + std::to_string(c.failed) + " | " + std::to_string(c.missing) +
-           " | " + Num(st.mean) + " | " + Num(st.std) + " | " + Num(st.median) + " | " + Num(st.min) + " | " +
-           Num(st.max) + " | " + Num(c.Precision()) + " | " + Num(c.Recall()) + " |\n";
+           " | " + FormatCell(st.mean) + " | " + FormatCell(st.std) + " | " + FormatCell(st.median) + " | " + FormatCell(st.min) + " | " +
+           FormatCell(st.max) + " | " + FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " |\n";
     }
   }
   s += "\n## Relative translation error [m] per method, pooled over groups\n\n";
@@ -125,8 +123,8 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
       const ErrorStatistics st = ComputeStatistics(pooled.re_trans_run_means[d]);
       s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
-           FormatDouble(pooled.re_n[d]) + " | " + Num(pooled.PooledReTrans(d)) + " | " + Num(st.std) + " | " +
-           Num(st.median) + " |\n";
+           FormatDouble(pooled.re_n[d]) + " | " + FormatCell(pooled.PooledReTrans(d)) + " | " + FormatCell(st.std) + " | " +
+           FormatCell(st.median) + " |\n";
     }
   }
   bool any_failure = false;

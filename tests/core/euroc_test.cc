@@ -133,7 +133,7 @@ TEST(EurocImageList, ImageOfTheWrongSizeNamesTheRow) {
 }
 
 // A small recording: 1 s of IMU at 100 Hz, ground truth, a camera at 10 Hz.
-Dataset SmallDataset() {
+Dataset OneSecondDataset() {
   Dataset d;
   for (int i = 0; i <= 100; ++i) {
     ImuSample s;
@@ -161,7 +161,7 @@ void WriteImages(const fs::path& dir, const std::vector<int64_t>& times) {
 
 TEST(EurocRecording, WrittenLayoutReadsBackAsPublishedEuroc) {
   TempDir tmp;
-  const Dataset d = SmallDataset();
+  const Dataset d = OneSecondDataset();
   const std::vector<int64_t> times = ImageTimes(d);
   WriteEuroc(tmp.path(), d, EurocImuSensor{}, times);
   WriteImages(tmp.path(), times);
@@ -190,7 +190,7 @@ TEST(EurocRecording, WrittenLayoutReadsBackAsPublishedEuroc) {
 
 TEST(EurocRecording, GroundTruthAndCameraAreOptional) {
   TempDir tmp;
-  Dataset d = SmallDataset();
+  Dataset d = OneSecondDataset();
   d.groundtruth.clear();
   WriteEuroc(tmp.path(), d, EurocImuSensor{}, ImageTimes(d));
   WriteImages(tmp.path(), ImageTimes(d));
@@ -204,7 +204,7 @@ TEST(EurocRecording, GroundTruthAndCameraAreOptional) {
 
 TEST(EurocRecording, FeaturesBesideMav0AreReadAtTheImageTimes) {
   TempDir tmp;
-  const Dataset d = SmallDataset();
+  const Dataset d = OneSecondDataset();
   const std::vector<int64_t> times = ImageTimes(d);
   WriteEuroc(tmp.path(), d, EurocImuSensor{}, times);
   WriteImages(tmp.path(), times);
@@ -223,7 +223,7 @@ TEST(EurocRecording, FeaturesBesideMav0AreReadAtTheImageTimes) {
 
 TEST(EurocRecording, BadInputNamesTheFile) {
   TempDir tmp;
-  const Dataset d = SmallDataset();
+  const Dataset d = OneSecondDataset();
   const std::vector<int64_t> times = ImageTimes(d);
   WriteEuroc(tmp.path(), d, EurocImuSensor{}, times);
   WriteImages(tmp.path(), times);
@@ -238,7 +238,7 @@ TEST(EurocRecording, BadInputNamesTheFile) {
 
 TEST(EurocRecording, VigilDatasetWithMav0KeepsItsFilesAndListsTheImages) {
   TempDir tmp;
-  Dataset d = SmallDataset();
+  Dataset d = OneSecondDataset();
   Landmark l;
   l.id = 7;
   l.p_W = Eigen::Vector3d(1, 2, 3);
