@@ -17,6 +17,13 @@ int LineOf(const YAML::Node& n) { return n.Mark().line >= 0 ? n.Mark().line + 1 
   throw InputError(Located(path, LineOf(n), key + ": " + why));
 }
 
+// A mapping key as text; a key that is not a plain scalar (a `? [a, b]` or `? {a: b}` complex key) is an
+// error naming its line, not a yaml-cpp conversion failure.
+std::string KeyText(const std::string& path, const YAML::Node& key, const std::string& where) {
+  if (!key.IsScalar()) Fail(path, key, where, "a key must be a plain name, not a sequence or mapping");
+  return key.Scalar();
+}
+
 // Labels and names become parts of run ids (joined by '-') and of file names.
 bool IsLabel(const std::string& s) {
   if (s.empty()) return false;
@@ -65,7 +72,7 @@ void CollectOverrides(const std::string& path, const YAML::Node& map, const std:
                       const std::string& what, std::vector<SweepOverride>* out) {
   if (!map.IsMap()) Fail(path, map, what, "expected a mapping of config keys to values");
   for (auto it = map.begin(); it != map.end(); ++it) {
-    const std::string key = it->first.as<std::string>();
+    const std::string key = KeyText(path, it->first, what);
     if (key.empty()) Fail(path, it->first, what, "empty key");
     out->push_back({prefix.empty() ? key : prefix + "." + key, it->second, LineOf(it->first)});
   }
@@ -87,7 +94,7 @@ std::vector<uint64_t> ParseSeeds(const std::string& path, const YAML::Node& n) {
   } else if (n.IsMap()) {
     uint64_t count = 0, first = 1;
     for (auto it = n.begin(); it != n.end(); ++it) {
-      const std::string key = it->first.as<std::string>();
+      const std::string key = KeyText(path, it->first, "seeds");
       uint64_t* field = key == "count" ? &count : key == "first" ? &first : nullptr;
       if (!field) Fail(path, it->first, "seeds." + key, "unknown key (expected count, first)");
       if (!config::Decode(it->second, field, &why)) Fail(path, it->second, "seeds." + key, why);
@@ -110,7 +117,7 @@ std::vector<uint64_t> ParseSeeds(const std::string& path, const YAML::Node& n) {
 
 SweepAxis ParseAxis(const std::string& path, const YAML::Node& key_node, const YAML::Node& n) {
   SweepAxis axis;
-  axis.key = key_node.as<std::string>();
+  axis.key = KeyText(path, key_node, "axes");
   const std::string where = "axes." + axis.key;
   if (n.IsSequence()) {
     for (std::size_t i = 0; i < n.size(); ++i) {
@@ -124,7 +131,7 @@ SweepAxis ParseAxis(const std::string& path, const YAML::Node& key_node, const Y
     axis.named = true;
     for (auto it = n.begin(); it != n.end(); ++it) {
       SweepSetting s;
-      s.label = it->first.as<std::string>();
+      s.label = KeyText(path, it->first, where);
       if (!IsLabel(s.label))
         Fail(path, it->first, where + "." + s.label,
              "setting names may use only letters, digits, '_' and '.'");
@@ -148,7 +155,7 @@ std::vector<SweepSetting> ParseMethods(const std::string& path, const YAML::Node
   std::vector<SweepSetting> methods;
   for (auto it = n.begin(); it != n.end(); ++it) {
     SweepSetting m;
-    m.label = it->first.as<std::string>();
+    m.label = KeyText(path, it->first, "methods");
     const std::string where = "methods." + m.label;
     if (!IsLabel(m.label))
       Fail(path, it->first, where, "method names may use only letters, digits, '_' and '.'");
@@ -181,7 +188,7 @@ SweepSpec LoadSweepSpec(const std::string& path) {
   spec.path = path;
   YAML::Node base_node, methods_node, seeds_node, table_methods_node, template_seed_node, axes_node;
   for (const auto& kv : root) {
-    const std::string key = kv.first.as<std::string>();
+    const std::string key = KeyText(path, kv.first, "(top level)");
     const YAML::Node v = kv.second;
     std::string why;
     if (key == "base") {

@@ -84,6 +84,11 @@ TEST(SweepSpec, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(error("axes:\n  glitch:\n    big: {mean: 5, loudness: 3}\nmethods: {a: none}\nseeds: [1]\n"),
             f + ":4: glitch.loudness: unknown key");
   EXPECT_EQ(error("methods: {a: none}\nseeds: [1, 1]\n"), f + ":3: seeds: seeds must be distinct");
+  // A complex key (found by fuzz_sweep_spec) is an input error, not a yaml-cpp conversion failure.
+  EXPECT_EQ(error("? {x: 1}: 0\nmethods: {a: none}\nseeds: [1]\n"),
+            f + ":2: (top level): a key must be a plain name, not a sequence or mapping");
+  EXPECT_EQ(error("methods: {? [a, b]: none}\nseeds: [1]\n"),
+            f + ":2: methods: a key must be a plain name, not a sequence or mapping");
   EXPECT_EQ(
       error("methods: {a: none}\nseeds: [1000]\n"),
       f + ":3: template_seed: must differ from every run seed (templates come from data the runs never see)");
