@@ -171,19 +171,26 @@ void RefuseReplacingFile(const fs::path& path, bool force, const std::string& vi
                      "'), so --force does not replace it; move it away or choose another output");
 }
 
+namespace {
+
+// Writes `content` into a new file at `path` (truncating a leftover of the same name).
+void WriteWholeFile(const fs::path& path, const std::string& content) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.flush();
+  if (!out) throw std::runtime_error(path.string() + ": write failed");
+}
+
+}  // namespace
+
 void WriteFileAtomic(const fs::path& path, const std::string& content) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (fs::exists(status) && !fs::is_regular_file(status))
     throw InputError(path.string() + ": exists and is not a regular file; refusing to replace it");
   const fs::path tmp = StagingPathFor(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(tmp.string() + ": cannot open for writing");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) throw std::runtime_error(tmp.string() + ": write failed");
-  }
+  WriteWholeFile(tmp, content);
   fs::rename(tmp, path);
   // A killed earlier write of the same file left its staging: removed now (dead processes of this host only).
   RemoveStaleStaging(path.has_parent_path() ? path.parent_path() : fs::path("."), path.filename().string());
@@ -192,8 +199,10 @@ void WriteFileAtomic(const fs::path& path, const std::string& content) {
 bool WriteFileIfAbsent(const fs::path& path, const std::string& content) {
   std::error_code ec;
   if (fs::exists(path, ec)) return false;
+  // Staged once, under this process' staging name, then linked into place: link(2) fails when the name
+  // exists, so of several processes creating the file at once exactly one succeeds.
   const fs::path tmp = StagingPathFor(path);
-  WriteFileAtomic(tmp, content);
+  WriteWholeFile(tmp, content);
   const int linked = ::link(tmp.c_str(), path.c_str());
   const int link_errno = errno;
   fs::remove(tmp, ec);

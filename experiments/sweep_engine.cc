@@ -147,14 +147,8 @@ namespace {
 bool HasEntriesBesidesSweepFileStaging(const fs::path& dir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    // The staging may itself be staged ("sweep.yaml.tmp-H-P.tmp-H-P": WriteFileAtomic of the staging file).
-    std::string name = entry.path().filename().string();
-    bool staging = false;
-    while (const auto parsed = ParseStagingName(name)) {
-      name = parsed->final_name;
-      staging = true;
-    }
-    if (!staging || name != "sweep.yaml") return true;
+    const auto staging = ParseStagingName(entry.path().filename().string());
+    if (!staging || staging->final_name != "sweep.yaml") return true;
   }
   return false;
 }
