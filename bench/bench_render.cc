@@ -30,7 +30,7 @@ void BM_RenderFrame(benchmark::State& state) {
   const vigil::CameraModel cam = Vga(state.range(2) != 0);
   const std::unique_ptr<vigil::sim::TrajectoryModel> motion =
       vigil::sim::MakeTrajectoryModel(vigil::sim::TrajectoryOptions{});
-  vigil::sim::ImageRenderer renderer(vigil::sim::MakeScene(), cam, options, 1);
+  vigil::sim::ImageRenderer renderer(vigil::sim::MakeHouseScene(), cam, options, 1);
   int k = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(renderer.Render(*motion, (k % 600) / 30.0, 20.0, k));
@@ -49,7 +49,7 @@ void BM_EncodePng(benchmark::State& state) {
   const vigil::CameraModel cam = Vga(false);
   const std::unique_ptr<vigil::sim::TrajectoryModel> motion =
       vigil::sim::MakeTrajectoryModel(vigil::sim::TrajectoryOptions{});
-  vigil::sim::ImageRenderer renderer(vigil::sim::MakeScene(), cam, vigil::sim::ImageOptions{}, 1);
+  vigil::sim::ImageRenderer renderer(vigil::sim::MakeHouseScene(), cam, vigil::sim::ImageOptions{}, 1);
   const std::vector<uint8_t> gray = renderer.Render(*motion, 2.0, 20.0, 0);
   std::size_t bytes = 0;
   for (auto _ : state)

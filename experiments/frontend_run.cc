@@ -8,6 +8,7 @@
 #include "experiments/frontend_stage.h"
 #include "sim/image_renderer.h"
 #include "sim/scene.h"
+#include "sim/simulator.h"
 #include "sim/trajectory_model.h"
 
 namespace vigil::experiments {
@@ -37,7 +38,7 @@ FrontendRunResult TrackSimulation(const RunConfig& config, Dataset* dataset) {
   const Clock::time_point start = Clock::now();
   const CameraModel& camera = dataset->camera;
   const std::unique_ptr<sim::TrajectoryModel> motion = sim::MakeTrajectoryModel(config.sim.trajectory);
-  const sim::Scene scene = sim::MakeScene();
+  const sim::Scene scene = sim::ScenarioScene(config.sim);
   sim::ImageRenderer renderer(scene, camera, config.sim.images, config.seed);
   const std::vector<CameraFrame>& frames = dataset->frames;
   const auto image_at = [&](std::size_t k) -> std::pair<int64_t, cv::Mat> {
@@ -46,7 +47,8 @@ FrontendRunResult TrackSimulation(const RunConfig& config, Dataset* dataset) {
     return {frames[k].t_ns, cv::Mat(camera.height, camera.width, CV_8UC1, gray.data()).clone()};
   };
   const auto describe = [&](std::size_t k) { return "rendered frame " + std::to_string(k); };
-  const TrackedFeatures tracked = TrackImages(frames.size(), image_at, describe, camera, config.frontend.tracker);
+  const TrackedFeatures tracked =
+      TrackImages(frames.size(), image_at, describe, camera, config.frontend.tracker);
   const TriangleMesh mesh = scene.Mesh();
   FrontendRunResult result;
   result.metrics = Evaluate(config, tracked, dataset->groundtruth, camera, &mesh);
@@ -55,7 +57,8 @@ FrontendRunResult TrackSimulation(const RunConfig& config, Dataset* dataset) {
   return result;
 }
 
-FrontendRunResult TrackRecording(const RunConfig& config, const std::filesystem::path& dir, Recording* recording) {
+FrontendRunResult TrackRecording(const RunConfig& config, const std::filesystem::path& dir,
+                                 Recording* recording) {
   const Clock::time_point start = Clock::now();
   if (!recording->has_camera || recording->images.empty())
     throw InputError(dir.string() + ": frontend.features: tracked needs camera images (mav0/cam0/data.csv)");
@@ -63,8 +66,9 @@ FrontendRunResult TrackRecording(const RunConfig& config, const std::filesystem:
   const TrackedFeatures tracked = TrackImageFiles(recording->images, dataset.camera, config.frontend.tracker);
   const std::optional<TriangleMesh> mesh = FindSceneMesh(dir);
   FrontendRunResult result;
-  result.metrics = Evaluate(config, tracked, recording->has_groundtruth ? dataset.groundtruth : std::vector<NavState>{},
-                            dataset.camera, mesh ? &*mesh : nullptr);
+  result.metrics =
+      Evaluate(config, tracked, recording->has_groundtruth ? dataset.groundtruth : std::vector<NavState>{},
+               dataset.camera, mesh ? &*mesh : nullptr);
   dataset.frames = tracked.frames;
   recording->has_features = true;
   result.track_s = std::chrono::duration<double>(Clock::now() - start).count();

@@ -177,7 +177,8 @@ std::vector<float> ImageRenderer::RenderSharp(const Eigen::Isometry3d& T_WB) {
 std::vector<float> ImageRenderer::PinholeDepth(const Eigen::Isometry3d& T_WB) {
   Gl& g = *gl_;
   g.context.BeginFrame(camera_.width, camera_.height, 0.0f, 0.0f, 0.0f);
-  DrawScene(g.list, CameraPose(T_WB, camera_), camera_, camera_.width, camera_.height, camera_.cx, camera_.cy);
+  DrawScene(g.list, CameraPose(T_WB, camera_), camera_, camera_.width, camera_.height, camera_.cx,
+            camera_.cy);
   std::vector<float> depth = g.context.ReadDepth();
   g.context.EndFrame();
   const double a = (kFar_m + kNear_m) / (kFar_m - kNear_m), b = -2.0 * kFar_m * kNear_m / (kFar_m - kNear_m);
@@ -194,8 +195,8 @@ std::vector<uint8_t> ImageRenderer::Render(const TrajectoryModel& motion, double
   std::vector<float> sum(n, 0.0f);
   const int sub_frames = options_.exposure_s > 0.0 ? options_.blur_samples : 1;
   for (int i = 0; i < sub_frames; ++i) {
-    const double t = sub_frames == 1 ? t_s
-                                     : t_s + options_.exposure_s * (static_cast<double>(i) / (sub_frames - 1) - 0.5);
+    const double t =
+        sub_frames == 1 ? t_s : t_s + options_.exposure_s * (static_cast<double>(i) / (sub_frames - 1) - 0.5);
     const std::vector<float> sharp = RenderSharp(BodyPose(motion.StateAt(std::clamp(t, 0.0, end_s))));
     for (std::size_t k = 0; k < n; ++k) sum[k] += sharp[k];
   }
@@ -218,10 +219,11 @@ std::string EncodeGrayPng(const std::vector<uint8_t>& gray, int width, int heigh
   return std::string(bytes.begin(), bytes.end());
 }
 
-std::uintmax_t RenderImageSequence(const TrajectoryModel& motion, double end_s, const CameraModel& camera,
-                                   const ImageOptions& options, uint64_t seed,
-                                   const std::vector<int64_t>& times_ns, const std::filesystem::path& image_dir) {
-  ImageRenderer renderer(MakeScene(), camera, options, seed);
+std::uintmax_t RenderImageSequence(const Scene& scene, const TrajectoryModel& motion, double end_s,
+                                   const CameraModel& camera, const ImageOptions& options, uint64_t seed,
+                                   const std::vector<int64_t>& times_ns,
+                                   const std::filesystem::path& image_dir) {
+  ImageRenderer renderer(scene, camera, options, seed);
   std::uintmax_t bytes = 0;
   for (std::size_t k = 0; k < times_ns.size(); ++k) {
     const std::vector<uint8_t> gray = renderer.Render(motion, NsToS(times_ns[k]), end_s, static_cast<int>(k));

@@ -60,10 +60,11 @@ class ImageRenderer {
 // PNG bytes of an 8-bit gray image (OpenCV's encoder at `compression`, deterministic).
 std::string EncodeGrayPng(const std::vector<uint8_t>& gray, int width, int height, int compression);
 
-// Renders every frame time of `times_ns` (times from the start of `motion`, in ns) into
+// Renders `scene` at every frame time of `times_ns` (times from the start of `motion`, in ns) into
 // `image_dir`/<t_ns>.png (core/euroc.h's names). Returns the total PNG bytes written.
-std::uintmax_t RenderImageSequence(const TrajectoryModel& motion, double end_s, const CameraModel& camera,
-                                   const ImageOptions& options, uint64_t seed,
-                                   const std::vector<int64_t>& times_ns, const std::filesystem::path& image_dir);
+std::uintmax_t RenderImageSequence(const Scene& scene, const TrajectoryModel& motion, double end_s,
+                                   const CameraModel& camera, const ImageOptions& options, uint64_t seed,
+                                   const std::vector<int64_t>& times_ns,
+                                   const std::filesystem::path& image_dir);
 
 }  // namespace vigil::sim

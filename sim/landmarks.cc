@@ -26,17 +26,22 @@ std::vector<Landmark> HouseLandmarks() {
   return out;
 }
 
-std::vector<Landmark> RandomWallLandmarks(int count, const std::vector<Eigen::Vector3d>& path_W,
-                                          double margin_m, double height_m, uint64_t seed, int first_id) {
-  std::vector<Landmark> out;
-  if (count <= 0 || path_W.empty()) return out;
+WallRoom RoomAround(const std::vector<Eigen::Vector3d>& path_W, double margin_m, double height_m) {
   Eigen::Vector3d lo = path_W.front(), hi = path_W.front();
   for (const auto& p : path_W) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double x0 = lo.x() - margin_m, x1 = hi.x() + margin_m, y0 = lo.y() - margin_m, y1 = hi.y() + margin_m;
-  const double z0 = lo.z() - 0.5 * height_m, z1 = hi.z() + 0.5 * height_m;
+  return {lo.x() - margin_m, hi.x() + margin_m,       lo.y() - margin_m,
+          hi.y() + margin_m, lo.z() - 0.5 * height_m, hi.z() + 0.5 * height_m};
+}
+
+std::vector<Landmark> RandomWallLandmarks(int count, const std::vector<Eigen::Vector3d>& path_W,
+                                          double margin_m, double height_m, uint64_t seed, int first_id) {
+  std::vector<Landmark> out;
+  if (count <= 0 || path_W.empty()) return out;
+  const WallRoom room = RoomAround(path_W, margin_m, height_m);
+  const double x0 = room.x0, x1 = room.x1, y0 = room.y0, y1 = room.y1, z0 = room.z0, z1 = room.z1;
   const double wx = x1 - x0, wy = y1 - y0;
   Rng rng(seed, "landmarks");
   out.reserve(static_cast<std::size_t>(count));

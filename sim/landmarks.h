@@ -20,6 +20,16 @@
 
 namespace vigil::sim {
 
+// The room of the random layout: four vertical walls x = x0, x = x1, y = y0, y = y1 (x0 < x1, y0 < y1)
+// spanning heights [z0, z1] [m, W].
+struct WallRoom {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, z0 = 0, z1 = 0;
+};
+
+// The room around `path_W` (non-empty): its horizontal bounding box widened by `margin_m` on every side, and
+// its height range widened by height_m / 2 below and above.
+WallRoom RoomAround(const std::vector<Eigen::Vector3d>& path_W, double margin_m, double height_m);
+
 // The 36 house points, ids 0..35.
 std::vector<Landmark> HouseLandmarks();
 

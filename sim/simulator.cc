@@ -5,8 +5,8 @@
 
 #include "core/error.h"
 #include "core/euroc.h"
-#include "core/mesh.h"
 #include "core/format.h"
+#include "core/mesh.h"
 #include "core/output.h"
 #include "sim/camera_simulator.h"
 #include "sim/glitch_injector.h"
@@ -40,6 +40,11 @@ std::unique_ptr<TrajectoryModel> CheckedMotion(const SimOptions& options) {
 }
 
 }  // namespace
+
+Scene ScenarioScene(const SimOptions& options) {
+  const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
+  return MakeScene(options.landmarks, SamplePath(*motion, options.duration_s));
+}
 
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
@@ -85,8 +90,9 @@ std::uintmax_t WriteImages(const SimOptions& options, uint64_t seed, const Datas
   std::vector<int64_t> times;
   for (const CameraFrame& f : dataset.frames) times.push_back(f.t_ns);
   WriteEuroc(dir, dataset, ImuSensorOf(options.imu), times);
-  WriteFileAtomic(dir / kSceneObjFile, MeshObj(MakeScene().Mesh()));
-  return RenderImageSequence(*motion, options.duration_s, options.camera, options.images, seed, times,
+  const Scene scene = ScenarioScene(options);
+  WriteFileAtomic(dir / kSceneObjFile, MeshObj(scene.Mesh()));
+  return RenderImageSequence(scene, *motion, options.duration_s, options.camera, options.images, seed, times,
                              EurocImageDir(dir));
 }
 

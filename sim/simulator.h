@@ -14,6 +14,7 @@
 #include "core/dataset.h"
 #include "core/euroc.h"
 #include "sim/imu_synthesizer.h"
+#include "sim/scene.h"
 #include "sim/sim_options.h"
 
 namespace vigil::sim {
@@ -29,6 +30,10 @@ ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed);
 
 // imu0/sensor.yaml of the simulated IMU: its rate and noise model (zeros when the noise is disabled).
 EurocImuSensor ImuSensorOf(const ImuOptions& imu);
+
+// The rendered world of the scenario (sim/scene.h): the scene its landmark layout stands for, around the path
+// of its trajectory over duration_s. Throws InputError for bad options.
+Scene ScenarioScene(const SimOptions& options);
 
 // The image side of a dataset directory `dir` (existing) for `dataset` = Simulate(options, seed): the EuRoC
 // layout mav0/ (core/euroc.h) with one rendered PNG per camera frame of dataset.frames, and scene.obj

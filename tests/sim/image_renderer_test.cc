@@ -49,11 +49,11 @@ Eigen::Isometry3d BodyFacingTheHouse(const CameraModel& cam) {
 
 TEST(ImageRenderer, DepthBufferMatchesTheSceneGeometryWithinOnePercent) {
   const CameraModel cam = SmallCamera();
-  ImageRenderer renderer(MakeScene(), cam, Sharp(), 1);
+  ImageRenderer renderer(MakeHouseScene(), cam, Sharp(), 1);
   const Eigen::Isometry3d T_WB = BodyFacingTheHouse(cam);
   const Eigen::Isometry3d T_WC = T_WB * cam.T_BC_iso();
   const std::vector<float> depth = renderer.PinholeDepth(T_WB);
-  const TriangleMesh mesh = MakeScene().Mesh();
+  const TriangleMesh mesh = MakeHouseScene().Mesh();
   int checked = 0;
   for (int v = 10; v < cam.height; v += 37) {
     for (int u = 7; u < cam.width; u += 41) {
@@ -73,7 +73,7 @@ TEST(ImageRenderer, DepthBufferMatchesTheSceneGeometryWithinOnePercent) {
 
 TEST(ImageRenderer, HouseVertexProjectsOntoTheWallItBelongsTo) {
   const CameraModel cam = SmallCamera();
-  ImageRenderer renderer(MakeScene(), cam, Sharp(), 1);
+  ImageRenderer renderer(MakeHouseScene(), cam, Sharp(), 1);
   const Eigen::Isometry3d T_WB = BodyFacingTheHouse(cam);
   const Eigen::Isometry3d T_CW = (T_WB * cam.T_BC_iso()).inverse();
   const std::vector<float> depth = renderer.PinholeDepth(T_WB);
@@ -92,7 +92,7 @@ TEST(ImageRenderer, HouseVertexProjectsOntoTheWallItBelongsTo) {
 std::vector<uint8_t> RenderFrame(const ImageOptions& options, uint64_t seed, const CameraModel& cam,
                                  double t_s = 2.0) {
   const std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(TrajectoryOptions{});
-  ImageRenderer renderer(MakeScene(), cam, options, seed);
+  ImageRenderer renderer(MakeHouseScene(), cam, options, seed);
   return renderer.Render(*motion, t_s, 20.0, 3);
 }
 
@@ -151,7 +151,7 @@ TEST(ImageRenderer, DistortionMovesPixelsAsTheCameraModelSays) {
   CameraModel pinhole = SmallCamera();
   CameraModel distorted = pinhole;
   distorted.distortion = {-0.28, 0.07, 0.0002, 0.00002};
-  ImageRenderer a(MakeScene(), pinhole, Sharp(), 1), b(MakeScene(), distorted, Sharp(), 1);
+  ImageRenderer a(MakeHouseScene(), pinhole, Sharp(), 1), b(MakeHouseScene(), distorted, Sharp(), 1);
   const Eigen::Isometry3d T_WB = BodyFacingTheHouse(pinhole);
   const std::vector<float> ideal = a.RenderSharp(T_WB), image = b.RenderSharp(T_WB);
   double matched = 0.0, unmatched = 0.0;
@@ -184,7 +184,7 @@ TEST(ImageRenderer, SimulateWritesTheEurocLayoutAndTheScene) {
     EXPECT_TRUE(fs::is_regular_file(ds / f)) << f;
   EXPECT_EQ(ReadFile(ds / "mav0/imu0/data.csv"), ReadFile(ds / "imu.csv"));
   const TriangleMesh mesh = ReadMeshObj((ds / "scene.obj").string());
-  EXPECT_EQ(mesh.triangles.size(), MakeScene().Mesh().triangles.size());
+  EXPECT_EQ(mesh.triangles.size(), MakeHouseScene().Mesh().triangles.size());
 
   // The mav0/ folder alone reads as a EuRoC recording with one image per feature frame.
   const Recording rec = ReadRecording(ds / "mav0");
