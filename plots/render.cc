@@ -10,8 +10,9 @@
 
 #include "core/dataset.h"
 #include "core/error.h"
-#include "plots/figure_data.h"
+#include "core/euroc.h"
 #include "gl/gl_context.h"
+#include "plots/figure_data.h"
 
 namespace vigil::plots {
 namespace {
@@ -194,7 +195,9 @@ std::vector<fs::path> RenderSweepFigures(const fs::path& sweep_dir, const fs::pa
 std::vector<fs::path> RenderDatasetFigures(const fs::path& dataset_dir, const fs::path& out_dir,
                                            const FigureOptions& options) {
   ValidateFigureOptions(options);
-  const Dataset data = ReadDataset(dataset_dir);
+  // A vigil dataset or a EuRoC folder (core/euroc.h); the latter has no landmarks and may lack ground truth.
+  const Recording recording = ReadRecording(dataset_dir);
+  const Dataset& data = recording.dataset;
   ImuAxis axis = ImuAxis::kAz;
   std::string label = "IMU";
   if (fs::is_regular_file(dataset_dir / "config.yaml")) {
@@ -203,8 +206,13 @@ std::vector<fs::path> RenderDatasetFigures(const fs::path& dataset_dir, const fs
     label = GlitchSettingOf(config).Label();
   }
   FigureWriter writer(out_dir, options);
-  writer.Write("fig1_scenario.png",
-               ScenarioFigure(ScenarioDataOf(data, "Scenario of " + dataset_dir.filename().string())));
+  fs::path named = fs::absolute(dataset_dir).lexically_normal();
+  if (!named.has_filename()) named = named.parent_path();  // "DIR/"
+  if (recording.has_groundtruth)
+    writer.Write("fig1_scenario.png",
+                 ScenarioFigure(ScenarioDataOf(data, "Scenario of " + named.filename().string())));
+  else
+    writer.Skip("fig1_scenario.png", dataset_dir.string() + " has no ground truth");
   writer.Write("fig2_glitches.png", GlitchFigure({ImuTraceOf(data, axis, label)}));
   return writer.written();
 }

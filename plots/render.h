@@ -7,7 +7,10 @@
 // Figure files: fig1_scenario.png, fig2_glitches.png, fig3_trajectories.png, fig4_relative_error.png,
 // fig5_detection.png, fig6_summary.png. A sweep gets all six (3 only when some run kept its trajectories, 5
 // only when some run used a detector); a run directory 1-5 as far as its data allows (3 needs the
-// trajectories, 4 metrics.json, 5 a detector); a dataset directory 1 and 2.
+// trajectories, 4 metrics.json, 5 a detector); a dataset directory 1 and 2. A dataset directory is a vigil
+// dataset or a EuRoC folder as published (core/euroc.h's ReadRecording: its ground truth, no landmarks); one
+// without ground truth gets figure 2 only, with one line "vigil: fig1_scenario.png skipped: DIR has no ground
+// truth".
 //
 // Figures draw only what the directories hold, never re-simulating or re-running a detector: 1 needs the
 // run's stamped_groundtruth.txt and landmarks.csv, 2 and 5 its imu_axis.csv (run.h's figure data; for a

@@ -43,13 +43,13 @@ Figure ScenarioFigure(const ScenarioData& data) {
       px.push_back(p[v.a]);
       py.push_back(p[v.b]);
     }
-    axes.Scatter(lx, ly, landmark_color, "landmarks", 0.8);
+    if (!lx.empty()) axes.Scatter(lx, ly, landmark_color, "landmarks", 0.8);  // a recording has none
     axes.Line(px, py, path_color, "trajectory");
     axes.legend = v.row == 0 && v.col == 0 ? LegendPosition::kUpperRight : LegendPosition::kNone;
   }
   Axes3D& view = figure.AddAxes3D(1, 1);
   view.title = "3-D view";
-  view.Points(data.landmarks_W, landmark_color, "landmarks");
+  if (!data.landmarks_W.empty()) view.Points(data.landmarks_W, landmark_color, "landmarks");
   view.Line(data.path_W, path_color, "trajectory");
   view.legend = LegendPosition::kNone;
   return figure;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/dataset.h"
+#include "core/euroc.h"
 #include "core/output.h"
 #include "detectors/detector.h"
 #include "experiments/detection_stage.h"
@@ -251,6 +252,23 @@ TEST(RenderDataset, WritesScenarioAndGlitches) {
   const auto written = RenderDatasetFigures(tmp.path() / "data", tmp.path() / "figs", Small());
   EXPECT_EQ(Names(written), (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png"}));
   for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+}
+
+// A EuRoC folder as published (mav0/ only: no landmarks, no config.yaml): figure 1 from its ground truth, and
+// without ground truth figure 2 alone.
+TEST(RenderDataset, EurocFolderWithAndWithoutGroundTruth) {
+  vigil::testing::TempDir tmp;
+  const auto config = testing::SyntheticConfig({false, 0.0, 1.0}, detectors::DetectorType::kNone, 3, 3.0);
+  const Dataset data = sim::Simulate(config.sim, config.seed);
+  fs::create_directories(tmp.path() / "euroc");
+  WriteEuroc(tmp.path() / "euroc", data, sim::ImuSensorOf(config.sim.imu), {});
+  fs::remove_all(tmp.path() / "euroc" / "mav0" / "cam0");  // the figures need no camera
+  const auto written = RenderDatasetFigures(tmp.path() / "euroc", tmp.path() / "figs", Small());
+  EXPECT_EQ(Names(written), (std::vector<std::string>{"fig1_scenario.png", "fig2_glitches.png"}));
+  for (const auto& p : written) ExpectRealFigure(p, 640, 400);
+  fs::remove_all(tmp.path() / "euroc" / "mav0" / "state_groundtruth_estimate0");
+  const auto imu_only = RenderDatasetFigures(tmp.path() / "euroc" / "mav0", tmp.path() / "figs2", Small());
+  EXPECT_EQ(Names(imu_only), (std::vector<std::string>{"fig2_glitches.png"}));
 }
 
 }  // namespace
