@@ -122,9 +122,9 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
 
   // Is the second newest frame a keyframe? (then the oldest frame leaves the window, else the second newest)
   const std::size_t n = window_.size();
-  const bool keyframe = n < 3 || tracked < options_.window.min_tracked_features ||
-                        KeyframeParallax(*window_[n - 3], *window_[n - 2]) >=
-                            options_.window.min_parallax_px / camera_.fx;
+  const bool keyframe =
+      n < 3 || tracked < options_.window.min_tracked_features ||
+      KeyframeParallax(*window_[n - 3], *window_[n - 2]) >= options_.window.min_parallax_px / camera_.fx;
   const bool full = static_cast<int>(n) >= WindowCapacity();
 
   if (!initialized_) {

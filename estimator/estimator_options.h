@@ -34,9 +34,9 @@ struct GroundTruthInitOptions {
 };
 
 struct WindowOptions {
-  int size = 10;                         // keyframes kept besides the newest frame
-  double min_parallax_px = 10.0;         // keyframe when the mean parallax to the previous frame reaches this
-  int min_tracked_features = 20;         // keyframe when fewer features are tracked into the newest frame
+  int size = 10;                  // keyframes kept besides the newest frame
+  double min_parallax_px = 10.0;  // keyframe when the mean parallax to the previous frame reaches this
+  int min_tracked_features = 20;  // keyframe when fewer features are tracked into the newest frame
   // Measure the keyframe parallax after rotating the older frame's observations by the frames' estimated
   // relative rotation, so that turning on the spot makes no keyframe (VINS-Mono's paper describes this
   // compensation; its code and vigil's default measure the raw displacement). Off by default: the paper

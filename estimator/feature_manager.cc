@@ -18,8 +18,7 @@ int FeatureManager::AddFrame(uint64_t frame_id, const std::map<int, Eigen::Vecto
   return tracked;
 }
 
-double FeatureManager::MeanParallax(uint64_t frame_a, uint64_t frame_b,
-                                    const Eigen::Matrix3d& R_CbCa) const {
+double FeatureManager::MeanParallax(uint64_t frame_a, uint64_t frame_b, const Eigen::Matrix3d& R_CbCa) const {
   double sum = 0.0;
   int count = 0;
   for (const auto& [id, track] : tracks_) {

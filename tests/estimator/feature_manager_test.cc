@@ -1,6 +1,7 @@
 // The keyframe parallax of FeatureManager: raw image displacement, or with the frames' rotation removed.
 #include "estimator/feature_manager.h"
 
+#include <cmath>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -11,7 +12,8 @@ namespace vigil::estimator {
 namespace {
 
 // Normalized observation of the point p_A (in camera a) from camera b, with b = R_AB, t_AB in a.
-Eigen::Vector2d Observe(const Eigen::Vector3d& p_A, const Eigen::Matrix3d& R_AB, const Eigen::Vector3d& t_AB) {
+Eigen::Vector2d Observe(const Eigen::Vector3d& p_A, const Eigen::Matrix3d& R_AB,
+                        const Eigen::Vector3d& t_AB) {
   const Eigen::Vector3d p_B = R_AB.transpose() * (p_A - t_AB);
   return p_B.head<2>() / p_B.z();
 }
@@ -52,7 +54,8 @@ TEST(FeatureManagerTest, RotationCompensatedParallaxKeepsTheTranslation) {
   // instead of a's (equal to first order).
   EXPECT_NEAR(slide_and_turn.MeanParallax(0, 1, R_AB.transpose()), translation_only, 0.1 * translation_only);
   // Identity compensation is the raw displacement, bit for bit.
-  EXPECT_EQ(slide_and_turn.MeanParallax(0, 1, Eigen::Matrix3d::Identity()), slide_and_turn.MeanParallax(0, 1));
+  EXPECT_EQ(slide_and_turn.MeanParallax(0, 1, Eigen::Matrix3d::Identity()),
+            slide_and_turn.MeanParallax(0, 1));
 }
 
 }  // namespace
