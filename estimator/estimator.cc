@@ -122,9 +122,9 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
 
   // Is the second newest frame a keyframe? (then the oldest frame leaves the window, else the second newest)
   const std::size_t n = window_.size();
-  const bool keyframe = n < 3 || tracked < options_.window.min_tracked_features ||
-                        features_.MeanParallax(window_[n - 3]->id, window_[n - 2]->id) >=
-                            options_.window.min_parallax_px / camera_.fx;
+  const bool keyframe =
+      n < 3 || tracked < options_.window.min_tracked_features ||
+      KeyframeParallax(*window_[n - 3], *window_[n - 2]) >= options_.window.min_parallax_px / camera_.fx;
   const bool full = static_cast<int>(n) >= WindowCapacity();
 
   if (!initialized_) {
@@ -167,6 +167,14 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   }
   if (keyframe && full) ++keyframes_;
   return FrameStatus::kTracking;
+}
+
+double Estimator::KeyframeParallax(const Frame& older, const Frame& newer) const {
+  // Before initialization the frames have no states: the raw displacement.
+  if (!options_.window.parallax_compensates_rotation || !initialized_)
+    return features_.MeanParallax(older.id, newer.id);
+  const Eigen::Matrix3d R_CnewerColder = T_WC(newer).linear().transpose() * T_WC(older).linear();
+  return features_.MeanParallax(older.id, newer.id, R_CnewerColder);
 }
 
 bool Estimator::TryInitialize() {

@@ -86,6 +86,9 @@ class Estimator {
   };
 
   bool TryInitialize();
+  // The keyframe criterion's mean parallax between two window frames (normalized plane), with the rotation
+  // compensated when options_.window.parallax_compensates_rotation and the window has states.
+  double KeyframeParallax(const Frame& older, const Frame& newer) const;
   void Predict(Frame* frame) const;
   // Builds and solves the window problem; false with a reason when the solver fails.
   bool Optimize(bool marginalize_oldest_next, std::string* reason);

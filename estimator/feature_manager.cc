@@ -18,7 +18,7 @@ int FeatureManager::AddFrame(uint64_t frame_id, const std::map<int, Eigen::Vecto
   return tracked;
 }
 
-double FeatureManager::MeanParallax(uint64_t frame_a, uint64_t frame_b) const {
+double FeatureManager::MeanParallax(uint64_t frame_a, uint64_t frame_b, const Eigen::Matrix3d& R_CbCa) const {
   double sum = 0.0;
   int count = 0;
   for (const auto& [id, track] : tracks_) {
@@ -28,10 +28,11 @@ double FeatureManager::MeanParallax(uint64_t frame_a, uint64_t frame_b) const {
       if (frame == frame_a) a = &n;
       if (frame == frame_b) b = &n;
     }
-    if (a != nullptr && b != nullptr) {
-      sum += (*a - *b).norm();
-      ++count;
-    }
+    if (a == nullptr || b == nullptr) continue;
+    const Eigen::Vector3d ray_in_b = R_CbCa * Eigen::Vector3d(a->x(), a->y(), 1.0);
+    if (ray_in_b.z() <= 0.0) continue;
+    sum += (ray_in_b.head<2>() / ray_in_b.z() - *b).norm();
+    ++count;
   }
   return count == 0 ? 0.0 : sum / count;
 }

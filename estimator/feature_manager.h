@@ -38,8 +38,12 @@ class FeatureManager {
 
   // Adds the observations of a new frame; returns how many of them continue an existing track.
   int AddFrame(uint64_t frame_id, const std::map<int, Eigen::Vector2d>& features_n);
-  // Mean distance on the normalized plane between two frames over the features both saw (0 when none).
-  double MeanParallax(uint64_t frame_a, uint64_t frame_b) const;
+  // Mean distance on the normalized plane between two frames over the features both saw (0 when none). Each
+  // observation in frame_a is first rotated into frame_b by R_CbCa (identity: the raw image displacement;
+  // the frames' relative rotation: the parallax of translation alone, VINS-Mono's rotation compensation);
+  // a ray that R_CbCa turns behind frame_b's camera is skipped.
+  double MeanParallax(uint64_t frame_a, uint64_t frame_b,
+                      const Eigen::Matrix3d& R_CbCa = Eigen::Matrix3d::Identity()) const;
   // Removes a frame's observations. A track anchored there moves its depth to its next observation's frame
   // (computed with `T_WC`, valid for both frames); tracks left without observations are erased.
   void RemoveFrame(uint64_t frame_id, const CameraPoseLookup& T_WC);

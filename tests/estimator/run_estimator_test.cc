@@ -159,3 +159,33 @@ TEST(RunEstimatorTest, InflationMitigatesFlaggedGlitches) {
 
 }  // namespace
 }  // namespace vigil::estimator
+
+namespace vigil::estimator {
+namespace {
+
+// The first corner of the rescue course (configs/rescue.yaml, 3 to 7 s): turning at about 0.5 rad/s moves the
+// image by 7 px per frame, so the raw parallax makes a keyframe of almost every frame there and the window
+// then spans a few tenths of a second; with the rotation compensated only the translation counts.
+TEST(RunEstimatorTest, RotationCompensatedParallaxMakesFewerKeyframesInTurns) {
+  sim::SimOptions sim_options;
+  sim_options.duration_s = 7.0;
+  sim_options.trajectory.type = sim::TrajectoryType::kRescue;
+  sim_options.landmarks.layout = sim::LandmarkLayout::kRandom;
+  sim_options.landmarks.random_count = 300;
+  sim_options.landmarks.random_margin_m = 4.0;
+  const Dataset data = sim::Simulate(sim_options, 3);
+  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 3);
+  EstimatorOptions raw;
+  EstimatorOptions compensated;
+  compensated.window.parallax_compensates_rotation = true;
+  const EstimatorResult a = RunEstimator(raw, input);
+  const EstimatorResult b = RunEstimator(compensated, input);
+  ASSERT_TRUE(a.ok) << a.failure_reason;
+  ASSERT_TRUE(b.ok) << b.failure_reason;
+  std::printf("keyframes over 7 s: raw parallax %d, rotation compensated %d\n", a.keyframes, b.keyframes);
+  EXPECT_LT(b.keyframes, a.keyframes / 2);
+  EXPECT_GT(b.keyframes, 5);
+}
+
+}  // namespace
+}  // namespace vigil::estimator
