@@ -72,6 +72,7 @@ class FeatureTracker {
   bool ShouldPublish(int64_t t_ns) const;
   void TrackIntoImage(const std::vector<cv::Mat>& pyramid);
   void RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now);
+  void RefineCorners(const cv::Mat& image, std::vector<cv::Point2f>* points, double max_shift_px) const;
   void EnforceSpacing();
   void DetectNewCorners(const cv::Mat& image);
   bool InsideBorder(const cv::Point2f& p) const;
