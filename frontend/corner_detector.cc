@@ -22,21 +22,21 @@ struct Candidate {
 // BORDER_REFLECT_101 index (OpenCV's default border, as in cv::cornerMinEigenVal).
 int Reflect(int i, int n) { return i < 0 ? -i : (i >= n ? 2 * n - 2 - i : i); }
 
-// Sums over the 3 x 3 block around every pixel of a 32-bit integer image (BORDER_REFLECT_101), exact.
-cv::Mat BlockSum3x3(const cv::Mat& values) {
-  const int w = values.cols;
-  cv::Mat across(values.size(), CV_32SC1), out(values.size(), CV_32SC1);
-  for (int y = 0; y < values.rows; ++y) {
-    const int32_t* v = values.ptr<int32_t>(y);
-    int32_t* s = across.ptr<int32_t>(y);
-    s[0] = v[0] + 2 * v[1];
-    for (int x = 1; x + 1 < w; ++x) s[x] = v[x - 1] + v[x] + v[x + 1];
-    s[w - 1] = v[w - 1] + 2 * v[w - 2];
-  }
-  for (int y = 0; y < values.rows; ++y) {
-    const int32_t* a = across.ptr<int32_t>(Reflect(y - 1, values.rows));
+// s[x] = v[x - 1] + v[x] + v[x + 1] over a row of w >= 2 values (BORDER_REFLECT_101 at its ends).
+void SumAcross3(const int32_t* v, int w, int32_t* s) {
+  s[0] = v[0] + 2 * v[1];
+  for (int x = 1; x + 1 < w; ++x) s[x] = v[x - 1] + v[x] + v[x + 1];
+  s[w - 1] = v[w - 1] + 2 * v[w - 2];
+}
+
+// The rows of `across` summed over 3 rows (BORDER_REFLECT_101 at the first and last).
+cv::Mat SumDown3(const cv::Mat& across) {
+  cv::Mat out(across.size(), CV_32SC1);
+  const int w = across.cols;
+  for (int y = 0; y < across.rows; ++y) {
+    const int32_t* a = across.ptr<int32_t>(Reflect(y - 1, across.rows));
     const int32_t* b = across.ptr<int32_t>(y);
-    const int32_t* c = across.ptr<int32_t>(Reflect(y + 1, values.rows));
+    const int32_t* c = across.ptr<int32_t>(Reflect(y + 1, across.rows));
     int32_t* o = out.ptr<int32_t>(y);
     for (int x = 0; x < w; ++x) o[x] = a[x] + b[x] + c[x];
   }
@@ -50,17 +50,26 @@ struct SecondMoments {
 };
 
 SecondMoments BlockMoments(const cv::Mat& image) {
-  cv::Mat dx, dy, product;
+  cv::Mat dx, dy;
   cv::Sobel(image, dx, CV_16S, 1, 0, kSobelSize, 1.0, 0.0, cv::BORDER_REFLECT_101);
   cv::Sobel(image, dy, CV_16S, 0, 1, kSobelSize, 1.0, 0.0, cv::BORDER_REFLECT_101);
-  SecondMoments m;
-  cv::multiply(dx, dx, product, 1.0, CV_32S);
-  m.xx = BlockSum3x3(product);
-  cv::multiply(dx, dy, product, 1.0, CV_32S);
-  m.xy = BlockSum3x3(product);
-  cv::multiply(dy, dy, product, 1.0, CV_32S);
-  m.yy = BlockSum3x3(product);
-  return m;
+  const int w = image.cols;
+  cv::Mat xx(image.size(), CV_32SC1), xy(image.size(), CV_32SC1), yy(image.size(), CV_32SC1);
+  std::vector<int32_t> pxx(static_cast<std::size_t>(w)), pxy(pxx.size()), pyy(pxx.size());
+  for (int y = 0; y < image.rows; ++y) {
+    const int16_t* gx = dx.ptr<int16_t>(y);
+    const int16_t* gy = dy.ptr<int16_t>(y);
+    for (int x = 0; x < w; ++x) {
+      const int32_t ex = gx[x], ey = gy[x];
+      pxx[static_cast<std::size_t>(x)] = ex * ex;
+      pxy[static_cast<std::size_t>(x)] = ex * ey;
+      pyy[static_cast<std::size_t>(x)] = ey * ey;
+    }
+    SumAcross3(pxx.data(), w, xx.ptr<int32_t>(y));
+    SumAcross3(pxy.data(), w, xy.ptr<int32_t>(y));
+    SumAcross3(pyy.data(), w, yy.ptr<int32_t>(y));
+  }
+  return {SumDown3(xx), SumDown3(xy), SumDown3(yy)};
 }
 
 // The smaller eigenvalue of [a b; b c]: the Shi-Tomasi score, proportional to cv::cornerMinEigenVal's (which

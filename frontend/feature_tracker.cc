@@ -87,6 +87,7 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   const std::vector<cv::Point2f> undistorted = undistorter_.Undistort(raw);
   // Tracks that existed at the last published frame keep their undistorted pixel of then until RANSAC.
   RejectWithFundamental(undistorted);
+  EndAgedTracks();
   EnforceSpacing();
   DetectNewCorners(gray);
 
@@ -170,6 +171,29 @@ void FeatureTracker::RefineCorners(const cv::Mat& image, std::vector<cv::Point2f
                                     options_.subpixel_epsilon_px));
   for (std::size_t i = 0; i < refined.size(); ++i)
     if (cv::norm(refined[i] - (*points)[i]) <= max_shift_px && InsideBorder(refined[i])) (*points)[i] = refined[i];
+}
+
+void FeatureTracker::EndAgedTracks() {
+  if (options_.max_track_length <= 0) return;
+  // Staggered: at most max_features / max_track_length tracks end per frame, the longest first (ties: lower
+  // id), so that tracks born together do not all end together and consecutive frames keep sharing tracks.
+  const std::size_t per_frame = static_cast<std::size_t>(
+      (options_.max_features + options_.max_track_length - 1) / options_.max_track_length);
+  std::vector<std::size_t> aged;
+  for (std::size_t i = 0; i < tracks_.size(); ++i)
+    if (tracks_[i].length >= options_.max_track_length) aged.push_back(i);
+  std::sort(aged.begin(), aged.end(), [&](std::size_t a, std::size_t b) {
+    if (tracks_[a].length != tracks_[b].length) return tracks_[a].length > tracks_[b].length;
+    return tracks_[a].id < tracks_[b].id;
+  });
+  if (aged.size() > per_frame) aged.resize(per_frame);
+  std::vector<bool> ends(tracks_.size(), false);
+  for (std::size_t i : aged) ends[i] = true;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < tracks_.size(); ++i)
+    if (!ends[i]) tracks_[kept++] = tracks_[i];
+  stats_.aged_out += static_cast<int64_t>(tracks_.size() - kept);
+  tracks_.resize(kept);
 }
 
 void FeatureTracker::EnforceSpacing() {

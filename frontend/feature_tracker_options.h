@@ -24,6 +24,10 @@ struct FeatureTrackerOptions {
   // Spacing hysteresis: new corners keep min_distance_px from every track, but a tracked point is dropped only
   // when it comes closer than this to a longer track (0: min_distance_px).
   double spacing_drop_px = 0.0;
+  // Track refresh: a track published this many times ends (its corner is detected again as a new track), so
+  // that no track carries the drift of a long chain of frame-to-frame steps; at most
+  // max_features / max_track_length tracks end per frame, the longest first (0: tracks never age out).
+  int max_track_length = 0;
   // Pyramidal Lucas-Kanade (cv::calcOpticalFlowPyrLK) from one frame into the next.
   int klt_window_px = 21;          // square search window side
   int klt_pyramid_levels = 3;      // levels above the full image (0: no pyramid)
@@ -65,6 +69,8 @@ struct FeatureTrackerOptions {
             Bounds::Positive());
     v.Field("spacing_drop_px", spacing_drop_px,
             "a track closer than this to a longer one is dropped [px] (0: min_distance_px)", Bounds::NonNegative());
+    v.Field("max_track_length", max_track_length,
+            "a track ends after this many published frames (0: no limit)", Bounds::NonNegative());
     v.Field("klt_window_px", klt_window_px, "Lucas-Kanade window side [px]", Bounds::AtLeast(3));
     v.Field("klt_pyramid_levels", klt_pyramid_levels, "Lucas-Kanade pyramid levels above the full image",
             Bounds::Closed(0, 8));
