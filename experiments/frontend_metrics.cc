@@ -21,7 +21,8 @@ nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const
   j["tracker"] = {{"klt_failures", stats.klt_failures},
                   {"ransac_outliers", stats.ransac_outliers},
                   {"spacing_drops", stats.spacing_drops},
-                  {"outside_undistorted", stats.outside_undistorted}};
+                  {"outside_undistorted", stats.outside_undistorted},
+                  {"aged_out", stats.aged_out}};
   nlohmann::json histogram = nlohmann::json::array();
   for (const frontend::HistogramBin& bin : summary.histogram)
     histogram.push_back({{"from", bin.from},

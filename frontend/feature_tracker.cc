@@ -9,6 +9,8 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "frontend/corner_detector.h"
+
 namespace vigil::frontend {
 namespace {
 
@@ -66,7 +68,15 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   // (copied, never sharing the caller's pixels, which it may reuse for its next image)
   cv::buildOpticalFlowPyramid(gray, pyramid, window, options_.klt_pyramid_levels, true, cv::BORDER_REFLECT_101,
                               cv::BORDER_CONSTANT, false);
-  if (!previous_pyramid_.empty() && !tracks_.empty()) TrackIntoImage(pyramid);
+  if (!previous_pyramid_.empty() && !tracks_.empty()) {
+    TrackIntoImage(pyramid);
+    if (options_.refine_tracks && options_.subpixel_window_px > 0) {
+      std::vector<cv::Point2f> points(tracks_.size());
+      for (std::size_t i = 0; i < tracks_.size(); ++i) points[i] = tracks_[i].raw_px;
+      RefineCorners(gray, &points, options_.subpixel_max_shift_px);
+      for (std::size_t i = 0; i < tracks_.size(); ++i) tracks_[i].raw_px = points[i];
+    }
+  }
   previous_pyramid_ = std::move(pyramid);
   if (!ShouldPublish(t_ns)) return std::nullopt;
   last_published_t_ns_ = t_ns;
@@ -77,6 +87,7 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   const std::vector<cv::Point2f> undistorted = undistorter_.Undistort(raw);
   // Tracks that existed at the last published frame keep their undistorted pixel of then until RANSAC.
   RejectWithFundamental(undistorted);
+  EndAgedTracks();
   EnforceSpacing();
   DetectNewCorners(gray);
 
@@ -150,6 +161,41 @@ void FeatureTracker::RejectWithFundamental(const std::vector<cv::Point2f>& undis
   tracks_.resize(kept);
 }
 
+void FeatureTracker::RefineCorners(const cv::Mat& image, std::vector<cv::Point2f>* points,
+                                   double max_shift_px) const {
+  if (points->empty()) return;
+  std::vector<cv::Point2f> refined = *points;
+  const cv::Size half(options_.subpixel_window_px, options_.subpixel_window_px);
+  cv::cornerSubPix(image, refined, half, cv::Size(-1, -1),
+                   cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options_.subpixel_iterations,
+                                    options_.subpixel_epsilon_px));
+  for (std::size_t i = 0; i < refined.size(); ++i)
+    if (cv::norm(refined[i] - (*points)[i]) <= max_shift_px && InsideBorder(refined[i])) (*points)[i] = refined[i];
+}
+
+void FeatureTracker::EndAgedTracks() {
+  if (options_.max_track_length <= 0) return;
+  // Staggered: at most max_features / max_track_length tracks end per frame, the longest first (ties: lower
+  // id), so that tracks born together do not all end together and consecutive frames keep sharing tracks.
+  const std::size_t per_frame = static_cast<std::size_t>(
+      (options_.max_features + options_.max_track_length - 1) / options_.max_track_length);
+  std::vector<std::size_t> aged;
+  for (std::size_t i = 0; i < tracks_.size(); ++i)
+    if (tracks_[i].length >= options_.max_track_length) aged.push_back(i);
+  std::sort(aged.begin(), aged.end(), [&](std::size_t a, std::size_t b) {
+    if (tracks_[a].length != tracks_[b].length) return tracks_[a].length > tracks_[b].length;
+    return tracks_[a].id < tracks_[b].id;
+  });
+  if (aged.size() > per_frame) aged.resize(per_frame);
+  std::vector<bool> ends(tracks_.size(), false);
+  for (std::size_t i : aged) ends[i] = true;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < tracks_.size(); ++i)
+    if (!ends[i]) tracks_[kept++] = tracks_[i];
+  stats_.aged_out += static_cast<int64_t>(tracks_.size() - kept);
+  tracks_.resize(kept);
+}
+
 void FeatureTracker::EnforceSpacing() {
   if (options_.min_distance_px <= 0.0) return;
   std::vector<std::size_t> order(tracks_.size());
@@ -158,7 +204,8 @@ void FeatureTracker::EnforceSpacing() {
     if (tracks_[a].length != tracks_[b].length) return tracks_[a].length > tracks_[b].length;
     return tracks_[a].id < tracks_[b].id;
   });
-  const double min_d2 = options_.min_distance_px * options_.min_distance_px;
+  const double drop_px = options_.spacing_drop_px > 0.0 ? options_.spacing_drop_px : options_.min_distance_px;
+  const double min_d2 = drop_px * drop_px;
   std::vector<TrackState> kept;
   kept.reserve(tracks_.size());
   for (std::size_t i : order) {
@@ -184,11 +231,15 @@ void FeatureTracker::DetectNewCorners(const cv::Mat& image) {
   for (const TrackState& track : tracks_)
     cv::circle(mask, cv::Point(cvRound(track.raw_px.x), cvRound(track.raw_px.y)), radius, cv::Scalar(0),
                cv::FILLED);
-  std::vector<cv::Point2f> corners;
-  cv::goodFeaturesToTrack(image, corners, wanted, options_.quality_level, options_.min_distance_px, mask);
+  CornerDetectorOptions detector;
+  detector.max_corners = wanted;
+  detector.quality_level = options_.quality_level;
+  detector.min_distance_px = options_.min_distance_px;
+  const std::vector<cv::Point2f> corners = DetectShiTomasiCorners(image, mask, detector);
   std::vector<cv::Point2f> inside;
   for (const cv::Point2f& c : corners)
     if (InsideBorder(c)) inside.push_back(c);
+  if (options_.subpixel_window_px > 0) RefineCorners(image, &inside, options_.subpixel_window_px);
   const std::vector<cv::Point2f> undistorted = undistorter_.Undistort(inside);
   for (std::size_t i = 0; i < inside.size(); ++i) {
     if (!InsideImage(undistorted[i])) continue;

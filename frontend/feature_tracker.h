@@ -47,6 +47,7 @@ struct TrackerStats {
   int64_t ransac_outliers = 0;    // dropped by the fundamental-matrix RANSAC
   int64_t spacing_drops = 0;      // dropped as too close to a longer track
   int64_t outside_undistorted = 0;  // dropped because the undistorted pixel left the image
+  int64_t aged_out = 0;           // ended after max_track_length published frames
 };
 
 class FeatureTracker {
@@ -72,6 +73,8 @@ class FeatureTracker {
   bool ShouldPublish(int64_t t_ns) const;
   void TrackIntoImage(const std::vector<cv::Mat>& pyramid);
   void RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now);
+  void RefineCorners(const cv::Mat& image, std::vector<cv::Point2f>* points, double max_shift_px) const;
+  void EndAgedTracks();
   void EnforceSpacing();
   void DetectNewCorners(const cv::Mat& image);
   bool InsideBorder(const cv::Point2f& p) const;

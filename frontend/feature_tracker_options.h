@@ -8,11 +8,26 @@
 namespace vigil::frontend {
 
 struct FeatureTrackerOptions {
-  // Corner detection (Shi-Tomasi, cv::goodFeaturesToTrack).
+  // Corner detection (Shi-Tomasi, frontend/corner_detector.h: cv::goodFeaturesToTrack's corners).
   int max_features = 150;          // tracks kept per frame; new corners fill up to this count
   double quality_level = 0.01;     // corner score relative to the best corner of the image
   double min_distance_px = 30.0;   // between a new corner and any track, and between kept tracks
   int border_px = 1;               // tracks closer than this to the image border are dropped
+  // Sub-pixel corner refinement (cv::cornerSubPix) of new corners and, with refine_tracks, of every tracked
+  // point after Lucas-Kanade: the point moves to where the image gradients around it meet (a corner's vertex),
+  // so a track stays on its corner instead of drifting with the window's deformation.
+  int subpixel_window_px = 0;        // half side of the refinement window (0: no refinement)
+  bool refine_tracks = false;        // refine tracked points too (else new corners only)
+  double subpixel_max_shift_px = 0.5;  // a refinement moving a tracked point farther is not applied
+  int subpixel_iterations = 20;
+  double subpixel_epsilon_px = 0.01;
+  // Spacing hysteresis: new corners keep min_distance_px from every track, but a tracked point is dropped only
+  // when it comes closer than this to a longer track (0: min_distance_px).
+  double spacing_drop_px = 0.0;
+  // Track refresh: a track published this many times ends (its corner is detected again as a new track), so
+  // that no track carries the drift of a long chain of frame-to-frame steps; at most
+  // max_features / max_track_length tracks end per frame, the longest first (0: tracks never age out).
+  int max_track_length = 0;
   // Pyramidal Lucas-Kanade (cv::calcOpticalFlowPyrLK) from one frame into the next.
   int klt_window_px = 21;          // square search window side
   int klt_pyramid_levels = 3;      // levels above the full image (0: no pyramid)
@@ -43,6 +58,19 @@ struct FeatureTrackerOptions {
             Bounds::NonNegative());
     v.Field("border_px", border_px, "tracks closer than this to the image border are dropped [px]",
             Bounds::NonNegative());
+    v.Field("subpixel_window_px", subpixel_window_px,
+            "half side of the cv::cornerSubPix window refining corners [px] (0: no refinement)",
+            Bounds::Closed(0, 15));
+    v.Field("refine_tracks", refine_tracks, "also refine every tracked point after Lucas-Kanade");
+    v.Field("subpixel_max_shift_px", subpixel_max_shift_px,
+            "largest refinement step applied to a tracked point [px]", Bounds::Positive());
+    v.Field("subpixel_iterations", subpixel_iterations, "cv::cornerSubPix iterations", Bounds::AtLeast(1));
+    v.Field("subpixel_epsilon_px", subpixel_epsilon_px, "cv::cornerSubPix convergence threshold [px]",
+            Bounds::Positive());
+    v.Field("spacing_drop_px", spacing_drop_px,
+            "a track closer than this to a longer one is dropped [px] (0: min_distance_px)", Bounds::NonNegative());
+    v.Field("max_track_length", max_track_length,
+            "a track ends after this many published frames (0: no limit)", Bounds::NonNegative());
     v.Field("klt_window_px", klt_window_px, "Lucas-Kanade window side [px]", Bounds::AtLeast(3));
     v.Field("klt_pyramid_levels", klt_pyramid_levels, "Lucas-Kanade pyramid levels above the full image",
             Bounds::Closed(0, 8));
