@@ -4,16 +4,21 @@
 //   1. optional CLAHE equalization;
 //   2. pyramidal Lucas-Kanade from the previous image into this one; tracks that fail, leave the image
 //      (less than border_px from its edge) or, with backward_check, do not track back to where they came from
-//      are dropped;
+//      are dropped; with refine_tracks (and subpixel_window_px > 0), each tracked point is refined by
+//      cv::cornerSubPix and keeps the refinement when it moved at most subpixel_max_shift_px;
 //   3. on a published frame only (at most max_rate_hz, the first image always):
 //      a. undistortion of every tracked point (frontend/point_undistorter.h);
 //      b. RANSAC fundamental matrix between each track's undistorted pixel at the last published frame and
 //         now; outliers are dropped (skipped with fewer than 8 tracks);
 //      c. tracks whose undistorted pixel lies outside the image are dropped;
-//      d. spacing: tracks are visited longest first (ties: lower id first); a track within min_distance_px of
-//         one already kept is dropped;
-//      e. new Shi-Tomasi corners, masked by discs of min_distance_px around the kept tracks, fill up to
-//         max_features; each gets the next track id.
+//      d. with max_track_length > 0, tracks of that length end, at most max_features / max_track_length per
+//         frame (longest first), so that a track's drift is bounded;
+//      e. spacing: tracks are visited longest first (ties: lower id first); a track within min_distance_px
+//         (spacing_drop_px when set) of one already kept is dropped;
+//      f. new Shi-Tomasi corners (frontend/corner_detector.h: cv::goodFeaturesToTrack's corners, scored only
+//         where the mask is open), masked by discs of min_distance_px around the kept tracks, fill up to
+//         max_features; with subpixel_window_px > 0 they are refined by cv::cornerSubPix (a refinement that
+//         leaves the window or the border is not kept); each gets the next track id.
 // Track ids start at 0 and increase by one per new corner, never reused; a track is contiguous over published
 // frames (once dropped, its id never returns), which is what the estimator's feature bookkeeping expects.
 //
