@@ -38,7 +38,7 @@ FrontendRunResult TrackSimulation(const RunConfig& config, Dataset* dataset) {
   const Clock::time_point start = Clock::now();
   const CameraModel& camera = dataset->camera;
   const std::unique_ptr<sim::TrajectoryModel> motion = sim::MakeTrajectoryModel(config.sim.trajectory);
-  const sim::Scene scene = sim::ScenarioScene(config.sim);
+  const sim::Scene scene = sim::ScenarioScene(config.sim, *motion);
   sim::ImageRenderer renderer(scene, camera, config.sim.images, config.seed);
   const std::vector<CameraFrame>& frames = dataset->frames;
   const auto image_at = [&](std::size_t k) -> std::pair<int64_t, cv::Mat> {

@@ -41,9 +41,8 @@ std::unique_ptr<TrajectoryModel> CheckedMotion(const SimOptions& options) {
 
 }  // namespace
 
-Scene ScenarioScene(const SimOptions& options) {
-  const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
-  return MakeScene(options.landmarks, SamplePath(*motion, options.duration_s));
+Scene ScenarioScene(const SimOptions& options, const TrajectoryModel& motion) {
+  return MakeScene(options.landmarks, SamplePath(motion, options.duration_s));
 }
 
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
@@ -90,7 +89,7 @@ std::uintmax_t WriteImages(const SimOptions& options, uint64_t seed, const Datas
   std::vector<int64_t> times;
   for (const CameraFrame& f : dataset.frames) times.push_back(f.t_ns);
   WriteEuroc(dir, dataset, ImuSensorOf(options.imu), times);
-  const Scene scene = ScenarioScene(options);
+  const Scene scene = ScenarioScene(options, *motion);
   WriteFileAtomic(dir / kSceneObjFile, MeshObj(scene.Mesh()));
   return RenderImageSequence(scene, *motion, options.duration_s, options.camera, options.images, seed, times,
                              EurocImageDir(dir));

@@ -16,6 +16,7 @@
 #include "sim/imu_synthesizer.h"
 #include "sim/scene.h"
 #include "sim/sim_options.h"
+#include "sim/trajectory_model.h"
 
 namespace vigil::sim {
 
@@ -32,8 +33,8 @@ ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed);
 EurocImuSensor ImuSensorOf(const ImuOptions& imu);
 
 // The rendered world of the scenario (sim/scene.h): the scene its landmark layout stands for, around the path
-// of its trajectory over duration_s. Throws InputError for bad options.
-Scene ScenarioScene(const SimOptions& options);
+// of `motion` (the scenario's trajectory) over duration_s.
+Scene ScenarioScene(const SimOptions& options, const TrajectoryModel& motion);
 
 // The image side of a dataset directory `dir` (existing) for `dataset` = Simulate(options, seed): the EuRoC
 // layout mav0/ (core/euroc.h) with one rendered PNG per camera frame of dataset.frames, and scene.obj

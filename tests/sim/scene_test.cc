@@ -58,7 +58,7 @@ TEST(Scene, HouseLayoutIsTheHouseSceneAndHouseAndRandomAddsTheWalls) {
 TEST(Scene, RescueCourseCameraSeesTheHallWallsAlongTheWholeLoop) {
   const experiments::RunConfig config =
       experiments::LoadRunConfig(std::string(VIGIL_SOURCE_DIR) + "/configs/rescue.yaml");
-  const TriangleMesh mesh = ScenarioScene(config.sim).Mesh();
+  const TriangleMesh mesh = ScenarioScene(config.sim, *MakeTrajectoryModel(config.sim.trajectory)).Mesh();
   const Dataset d = Simulate(config.sim, config.seed);
   const WallRoom room = RoomAround({{-6, -4, 0}, {6, 4, 0}}, config.sim.landmarks.random_margin_m, 0.0);
   int frames = 0, on_walls = 0;
