@@ -30,9 +30,7 @@ const std::vector<cv::Mat>& Sequence() {
     motion.angle_rad = 0.003;
     motion.scale = 0.002;
     const cv::Mat texture = testing::MakeTexture(1600, 1200, 5);
-    std::vector<cv::Mat> out;
-    for (int k = 0; k < kFrames; ++k) out.push_back(testing::Warp(texture, motion.H(k), motion.size));
-    return out;
+    return motion.Frames(texture, kFrames);
   }();
   return images;
 }

@@ -32,7 +32,8 @@ TrackerCamera Camera640() {
 std::vector<CameraFrame> TrackAll(FeatureTracker& tracker, const std::vector<cv::Mat>& images) {
   std::vector<CameraFrame> frames;
   for (std::size_t k = 0; k < images.size(); ++k)
-    if (auto frame = tracker.Track(images[k], static_cast<int64_t>(k) * kFramePeriod_ns)) frames.push_back(*frame);
+    if (auto frame = tracker.Track(images[k], static_cast<int64_t>(k) * kFramePeriod_ns))
+      frames.push_back(*frame);
   return frames;
 }
 
@@ -61,8 +62,7 @@ double Quantile(std::vector<double> values, double q) {
 TEST(FeatureTracker, TracksFollowAKnownHomography) {
   const PlaneMotion motion;  // 1.9 px, 0.29 deg and 0.4 % of zoom per frame
   const cv::Mat texture = MakeTexture(1280, 1000, 7);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 12; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 12);
   FeatureTracker tracker(FeatureTrackerOptions{}, Camera640());
   const std::vector<CameraFrame> frames = TrackAll(tracker, images);
   ASSERT_EQ(frames.size(), images.size());
@@ -98,8 +98,7 @@ TEST(FeatureTracker, TranslationIsTrackedWithoutDrift) {
   motion.angle_rad = motion.scale = 0.0;
   motion.translation_px = {3.3, 1.45};
   const cv::Mat texture = MakeTexture(1280, 1000, 8);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 12; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 12);
   FeatureTracker tracker(FeatureTrackerOptions{}, Camera640());
   const std::vector<CameraFrame> frames = TrackAll(tracker, images);
   const ReprojectionEvaluation e = EvaluateReprojection(frames, PlaneTruth(frames, motion), 0.3);
@@ -228,8 +227,7 @@ TEST(FeatureTracker, SameImagesGiveIdenticalOutput) {
 TEST(FeatureTracker, OutputIsUndistorted) {
   const PlaneMotion motion;
   const cv::Mat texture = MakeTexture(1280, 1000, 9);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 5; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 5);
   FeatureTrackerOptions options;
   options.ransac = false;  // RANSAC on differently undistorted points may decide differently
   TrackerCamera distorted = Camera640();
@@ -245,8 +243,8 @@ TEST(FeatureTracker, OutputIsUndistorted) {
     for (std::size_t i = 0; i < raw[f].features.size(); ++i) {
       ASSERT_EQ(raw[f].features[i].id, undistorted[f].features[i].id);
       const Eigen::Vector2d& p = raw[f].features[i].uv_px;
-      const cv::Point2d back = undistorter.Distort({undistorted[f].features[i].uv_px.x(),
-                                                    undistorted[f].features[i].uv_px.y()});
+      const cv::Point2d back =
+          undistorter.Distort({undistorted[f].features[i].uv_px.x(), undistorted[f].features[i].uv_px.y()});
       EXPECT_NEAR(back.x, p.x(), 1e-3);
       EXPECT_NEAR(back.y, p.y(), 1e-3);
     }
@@ -256,8 +254,7 @@ TEST(FeatureTracker, OutputIsUndistorted) {
 TEST(FeatureTracker, PublishesAtMostMaxRate) {
   const PlaneMotion motion;
   const cv::Mat texture = MakeTexture(1280, 1000, 3);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 12; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 12);
   FeatureTrackerOptions options;
   options.max_rate_hz = 10.0;  // images at 20 Hz: every other one
   FeatureTracker tracker(options, Camera640());
@@ -277,17 +274,13 @@ TEST(FeatureTracker, PublishesAtMostMaxRate) {
 TEST(FeatureTracker, TracksAgeOutAfterMaxTrackLength) {
   const PlaneMotion motion;
   const cv::Mat texture = MakeTexture(1280, 1000, 4);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 16; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 16);
   FeatureTrackerOptions options;
   options.max_track_length = 4;
   FeatureTracker tracker(options, Camera640());
   const std::vector<CameraFrame> frames = TrackAll(tracker, images);
-  std::map<int, int> length;
-  for (const CameraFrame& frame : frames)
-    for (const FeatureObservation& obs : frame.features) ++length[obs.id];
-  int longest = 0;
-  for (const auto& [id, n] : length) longest = std::max(longest, n);
+  const std::vector<int> lengths = TrackLengths(frames);
+  const int longest = *std::max_element(lengths.begin(), lengths.end());
   EXPECT_LT(longest, static_cast<int>(frames.size()) / 2);
   EXPECT_GT(tracker.stats().aged_out, options.max_features);
   for (std::size_t f = 1; f < frames.size(); ++f) {
@@ -305,8 +298,7 @@ TEST(FeatureTracker, TracksAgeOutAfterMaxTrackLength) {
 TEST(FeatureTracker, RefinedTracksDriftLess) {
   const PlaneMotion motion;
   const cv::Mat texture = MakeTexture(1280, 1000, 7);
-  std::vector<cv::Mat> images;
-  for (int k = 0; k < 12; ++k) images.push_back(Warp(texture, motion.H(k), motion.size));
+  const std::vector<cv::Mat> images = motion.Frames(texture, 12);
   FeatureTrackerOptions options;
   FeatureTracker plain(options, Camera640());
   options.subpixel_window_px = 3;

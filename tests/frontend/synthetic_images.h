@@ -61,6 +61,13 @@ struct PlaneMotion {
     const cv::Matx33d back(1, 0, c.x + translation_px.x * k, 0, 1, c.y + translation_px.y * k, 0, 0, 1);
     return back * rs * to_origin;
   }
+
+  // Frames 0 .. count - 1 of `texture` seen through this motion.
+  std::vector<cv::Mat> Frames(const cv::Mat& texture, int count) const {
+    std::vector<cv::Mat> out;
+    for (int k = 0; k < count; ++k) out.push_back(Warp(texture, H(k), size));
+    return out;
+  }
 };
 
 }  // namespace vigil::frontend::testing
