@@ -1,8 +1,30 @@
 #include "experiments/frontend_metrics.h"
 
+#include <algorithm>
+
 #include "experiments/statistics.h"
 
 namespace vigil::experiments {
+namespace {
+
+// The errors of `reprojection` by age, over the bins whose lower edges are `bins` (the last bin open; ages
+// below the first edge are in no bin).
+nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reprojection, const std::vector<int>& bins) {
+  std::vector<std::vector<double>> errors_px(bins.size());
+  for (std::size_t i = 0; i < reprojection.errors_px.size(); ++i) {
+    const auto it = std::upper_bound(bins.begin(), bins.end(), reprojection.ages_frames[i]);
+    if (it == bins.begin()) continue;
+    errors_px[static_cast<std::size_t>(it - bins.begin()) - 1].push_back(reprojection.errors_px[i]);
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t b = 0; b < bins.size(); ++b)
+    out.push_back({{"from", bins[b]},
+                   {"to", b + 1 < bins.size() ? nlohmann::json(bins[b + 1] - 1) : nlohmann::json(nullptr)},
+                   {"error_px", StatisticsJson(ComputeStatistics(std::move(errors_px[b])))}});
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const frontend::TrackerStats& stats,
                                    const frontend::FrontendEvaluationOptions& options,
@@ -40,7 +62,8 @@ nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const
                          {"without_truth", reprojection->without_truth},
                          {"outlier_threshold_px", options.outlier_threshold_px},
                          {"outliers", reprojection->outliers},
-                         {"outlier_ratio", reprojection->outlier_ratio}};
+                         {"outlier_ratio", reprojection->outlier_ratio},
+                         {"error_by_age_px", ErrorsByAgeJson(*reprojection, options.track_length_bins)}};
   }
   return j;
 }

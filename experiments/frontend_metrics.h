@@ -6,8 +6,12 @@
 //    "track_length_frames": {"min": .., "median": .., "mean": .., "max": ..,
 //                            "histogram": [{"from": 1, "to": 1, "count": ..}, ..., {"from": 100, "to": null, ..}]},
 //    "reprojection": {"error_px": STATS, "evaluated": .., "first_observations": .., "without_truth": ..,
-//                     "outlier_threshold_px": 2.0, "outliers": .., "outlier_ratio": ..}      (with a scene only)
+//                     "outlier_threshold_px": 2.0, "outliers": .., "outlier_ratio": ..,
+//                     "error_by_age_px": [{"from": 1, "to": 1, "error_px": STATS}, ..., {"from": 100, "to": null,
+//                                          ..}]}                                             (with a scene only)
 //    "time_per_image_ms": ..}                                                  (frontend.json only: timing)
+// error_by_age_px groups the errors by the observation's age (frames since its track's first observation) over
+// the bins of track_length_bins; a bin without observations has STATS of n = 0.
 // STATS as everywhere (experiments/statistics.h). Every number but the timing is a deterministic function of
 // the images and the options.
 #pragma once

@@ -5,7 +5,10 @@
 //   - track length: published frames a track id appears in;
 //   - reprojection error: |observed pixel - true pixel| of every observation that is not its track's first
 //     (a first observation defines its track's scene point) and whose truth is known;
-//   - outlier ratio: share of those observations with an error above outlier_threshold_px.
+//   - outlier ratio: share of those observations with an error above outlier_threshold_px;
+//   - the age of each evaluated observation: published frames since its track's first observation (1: the
+//     track's second frame), so that errors can be told apart by how far a track has been carried (a
+//     frame-to-frame tracker's error grows with it).
 #pragma once
 
 #include <cstdint>
@@ -58,6 +61,7 @@ TrackLengthSummary SummarizeTrackLengths(const std::vector<int>& lengths, const 
 
 struct ReprojectionEvaluation {
   std::vector<double> errors_px;    // one per evaluated observation, in frame then feature order
+  std::vector<int> ages_frames;     // beside errors_px: frames since the track's first observation (>= 1)
   int64_t observations = 0;         // every observation
   int64_t first_observations = 0;   // observations that start a track (not evaluated)
   int64_t without_truth = 0;        // later observations whose truth is unknown

@@ -117,6 +117,18 @@ TEST(FrontendStage, EvaluatesTracksAgainstTheScene) {
   EXPECT_LT(j["reprojection"]["error_px"]["rmse"].get<double>(), 0.3);
   EXPECT_EQ(j["track_length_frames"]["histogram"].back()["to"], nullptr);
   EXPECT_EQ(j["track_length_frames"]["max"], 10);
+  // The errors by age partition the evaluated observations over the default bins (1, 2, 3-4, 5-9, 10-19, ...):
+  // tracks of 10 frames have ages 1 to 9, so the bins from 10 on are empty.
+  const nlohmann::json& by_age = j["reprojection"]["error_by_age_px"];
+  ASSERT_EQ(by_age.size(), 8u);
+  int64_t binned = 0;
+  for (const nlohmann::json& bin : by_age) binned += bin["error_px"]["n"].get<int64_t>();
+  EXPECT_EQ(binned, static_cast<int64_t>(e.errors_px.size()));
+  EXPECT_EQ(by_age[0]["from"], 1);
+  EXPECT_EQ(by_age[2]["to"], 4);
+  EXPECT_GT(by_age[3]["error_px"]["n"].get<int64_t>(), 0);
+  EXPECT_EQ(by_age[4]["error_px"]["n"], 0);
+  EXPECT_EQ(by_age.back()["to"], nullptr);
   EXPECT_FALSE(FrontendMetricsJson(tracked.frames, tracked.stats, {}, std::nullopt).contains("reprojection"));
 }
 

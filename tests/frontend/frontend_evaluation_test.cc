@@ -62,6 +62,8 @@ TEST(FrontendEvaluation, ReprojectionErrorsSkipFirstObservationsAndUnknownTruth)
   EXPECT_DOUBLE_EQ(e.errors_px[0], 0.0);
   EXPECT_DOUBLE_EQ(e.errors_px[1], 5.0);
   EXPECT_DOUBLE_EQ(e.errors_px[2], 0.5);
+  // Ages count frames since the track's first observation, including those without truth.
+  EXPECT_EQ(e.ages_frames, (std::vector<int>{1, 1, 2}));
   EXPECT_EQ(e.outliers, 1);
   EXPECT_DOUBLE_EQ(e.outlier_ratio, 1.0 / 3.0);
   EXPECT_EQ(EvaluateReprojection(frames, truth, 5.0).outliers, 0);  // strictly above the threshold
