@@ -1,6 +1,6 @@
 #include "experiments/frontend_metrics.h"
 
-#include <algorithm>
+#include <optional>
 
 #include "experiments/statistics.h"
 
@@ -11,11 +11,9 @@ namespace {
 // below the first edge are in no bin).
 nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reprojection, const std::vector<int>& bins) {
   std::vector<std::vector<double>> errors_px(bins.size());
-  for (std::size_t i = 0; i < reprojection.errors_px.size(); ++i) {
-    const auto it = std::upper_bound(bins.begin(), bins.end(), reprojection.ages_frames[i]);
-    if (it == bins.begin()) continue;
-    errors_px[static_cast<std::size_t>(it - bins.begin()) - 1].push_back(reprojection.errors_px[i]);
-  }
+  for (std::size_t i = 0; i < reprojection.errors_px.size(); ++i)
+    if (const std::optional<std::size_t> bin = frontend::BinOf(bins, reprojection.ages_frames[i]))
+      errors_px[*bin].push_back(reprojection.errors_px[i]);
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t b = 0; b < bins.size(); ++b)
     out.push_back({{"from", bins[b]},

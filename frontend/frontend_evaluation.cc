@@ -15,6 +15,12 @@ std::string ValidateEvaluationOptions(const FrontendEvaluationOptions& options) 
   return "";
 }
 
+std::optional<std::size_t> BinOf(const std::vector<int>& bins, int value) {
+  const auto it = std::upper_bound(bins.begin(), bins.end(), value);
+  if (it == bins.begin()) return std::nullopt;
+  return static_cast<std::size_t>(it - bins.begin()) - 1;
+}
+
 std::vector<int> TrackLengths(const std::vector<CameraFrame>& frames) {
   std::map<int, std::size_t> index;  // id -> position in `lengths`
   std::vector<int> lengths;
@@ -41,12 +47,8 @@ TrackLengthSummary SummarizeTrackLengths(const std::vector<int>& lengths, const 
   const std::size_t n = sorted.size();
   s.median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
   s.mean = std::accumulate(sorted.begin(), sorted.end(), 0.0) / static_cast<double>(n);
-  for (int length : sorted) {
-    // The last bin whose lower edge is <= length.
-    const auto it = std::upper_bound(bins.begin(), bins.end(), length);
-    if (it == bins.begin()) continue;
-    ++s.histogram[static_cast<std::size_t>(it - bins.begin()) - 1].count;
-  }
+  for (int length : sorted)
+    if (const std::optional<std::size_t> bin = BinOf(bins, length)) ++s.histogram[*bin].count;
   return s;
 }
 

@@ -11,7 +11,9 @@
 //     frame-to-frame tracker's error grows with it).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,10 @@ struct TrackLengthSummary {
   double median = 0.0, mean = 0.0;
   std::vector<HistogramBin> histogram;
 };
+
+// The bin of `value` among bins with lower edges `bins` (increasing; the last bin is open): the last bin whose
+// lower edge is <= value, or nothing when value is below the first edge.
+std::optional<std::size_t> BinOf(const std::vector<int>& bins, int value);
 
 // Lengths of every track id over `frames`, in the order of first appearance.
 std::vector<int> TrackLengths(const std::vector<CameraFrame>& frames);

@@ -14,6 +14,15 @@ CameraFrame Frame(int64_t t_ns, std::vector<std::pair<int, Eigen::Vector2d>> obs
   return frame;
 }
 
+TEST(FrontendEvaluation, BinOfIsTheLastBinStartingAtOrBelowTheValue) {
+  const std::vector<int> bins = {1, 2, 5};
+  EXPECT_EQ(BinOf(bins, 0), std::nullopt);
+  EXPECT_EQ(BinOf(bins, 1), 0u);
+  EXPECT_EQ(BinOf(bins, 4), 1u);
+  EXPECT_EQ(BinOf(bins, 5), 2u);
+  EXPECT_EQ(BinOf(bins, 1000), 2u);  // the last bin is open
+}
+
 TEST(FrontendEvaluation, TrackLengthsAndTheirSummary) {
   const Eigen::Vector2d p(1, 1);
   // id 4: 3 frames, id 7: 1, id 2: 2, id 9: 1 (appears once, late)
