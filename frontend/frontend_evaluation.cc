@@ -57,26 +57,25 @@ ReprojectionEvaluation EvaluateReprojection(const std::vector<CameraFrame>& fram
   if (truth.size() != frames.size())
     throw std::invalid_argument("EvaluateReprojection: truth and frames differ in size");
   ReprojectionEvaluation e;
-  std::map<int, int> age_frames;  // track id -> frames since its first observation
+  std::map<int, std::size_t> first_frame;  // track id -> index of the frame of its first observation
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const std::vector<FeatureObservation>& features = frames[f].features;
     if (truth[f].size() != features.size())
       throw std::invalid_argument("EvaluateReprojection: truth and frame features differ in size");
     for (std::size_t i = 0; i < features.size(); ++i) {
       ++e.observations;
-      const auto [age, first] = age_frames.emplace(features[i].id, 0);
-      if (first) {
+      const auto [first, inserted] = first_frame.emplace(features[i].id, f);
+      if (inserted) {
         ++e.first_observations;
         continue;
       }
-      ++age->second;
       if (!truth[f][i]) {
         ++e.without_truth;
         continue;
       }
       const double error = (features[i].uv_px - *truth[f][i]).norm();
       e.errors_px.push_back(error);
-      e.ages_frames.push_back(age->second);
+      e.ages_frames.push_back(static_cast<int>(f - first->second));
       if (error > outlier_threshold_px) ++e.outliers;
     }
   }

@@ -73,6 +73,10 @@ TEST(FrontendEvaluation, ReprojectionErrorsSkipFirstObservationsAndUnknownTruth)
   EXPECT_DOUBLE_EQ(e.errors_px[2], 0.5);
   // Ages count frames since the track's first observation, including those without truth.
   EXPECT_EQ(e.ages_frames, (std::vector<int>{1, 1, 2}));
+  // A track missing from a frame still ages with it: the age counts frames, not observations.
+  const std::vector<CameraFrame> gap = {Frame(0, {{1, {10, 10}}}), Frame(1, {}), Frame(2, {{1, {10, 10}}})};
+  const TruePixels gap_truth = {{Eigen::Vector2d(10, 10)}, {}, {Eigen::Vector2d(10, 10)}};
+  EXPECT_EQ(EvaluateReprojection(gap, gap_truth, 2.0).ages_frames, (std::vector<int>{2}));
   EXPECT_EQ(e.outliers, 1);
   EXPECT_DOUBLE_EQ(e.outlier_ratio, 1.0 / 3.0);
   EXPECT_EQ(EvaluateReprojection(frames, truth, 5.0).outliers, 0);  // strictly above the threshold
