@@ -42,7 +42,9 @@ nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const
                   {"ransac_outliers", stats.ransac_outliers},
                   {"spacing_drops", stats.spacing_drops},
                   {"outside_undistorted", stats.outside_undistorted},
-                  {"aged_out", stats.aged_out}};
+                  {"aged_out", stats.aged_out},
+                  {"anchor_refined", stats.anchor_refined},
+                  {"anchor_rejected", stats.anchor_rejected}};
   nlohmann::json histogram = nlohmann::json::array();
   for (const frontend::HistogramBin& bin : summary.histogram)
     histogram.push_back({{"from", bin.from},

@@ -2,7 +2,8 @@
 // when the scene's geometry is known, how far its tracks are from the truth (frontend/frontend_evaluation.h).
 //
 //   {"features": "tracked", "images": .., "published_frames": .., "tracks": .., "observations": ..,
-//    "tracker": {"klt_failures": .., "ransac_outliers": .., "spacing_drops": .., "outside_undistorted": ..},
+//    "tracker": {"klt_failures": .., "ransac_outliers": .., "spacing_drops": .., "outside_undistorted": ..,
+//                "aged_out": .., "anchor_refined": .., "anchor_rejected": ..},
 //    "track_length_frames": {"min": .., "median": .., "mean": .., "max": ..,
 //                            "histogram": [{"from": 1, "to": 1, "count": ..}, ..., {"from": 100, "to": null, ..}]},
 //    "reprojection": {"error_px": STATS, "evaluated": .., "first_observations": .., "without_truth": ..,

@@ -76,6 +76,7 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
       RefineCorners(gray, &points, options_.subpixel_max_shift_px);
       for (std::size_t i = 0; i < tracks_.size(); ++i) tracks_[i].raw_px = points[i];
     }
+    if (options_.anchor_refinement) RefineAgainstAnchors(gray);
   }
   previous_pyramid_ = std::move(pyramid);
   if (!ShouldPublish(t_ns)) return std::nullopt;
@@ -133,6 +134,34 @@ void FeatureTracker::TrackIntoImage(const std::vector<cv::Mat>& pyramid) {
     tracks_[kept++] = tracks_[i];
   }
   tracks_.resize(kept);
+}
+
+void FeatureTracker::RefineAgainstAnchors(const cv::Mat& image) {
+  AffineAlignOptions align;
+  align.max_iterations = options_.klt_max_iterations;
+  align.epsilon_px = options_.klt_epsilon_px;
+  for (TrackState& track : tracks_) {
+    std::optional<AffineWarp> warp;
+    if (track.anchor) warp = AlignAffinePatch(*track.anchor, image, {track.anchor_linear, track.raw_px}, align);
+    if (warp && cv::norm(warp->centre_px - track.raw_px) <= options_.anchor_max_shift_px &&
+        InsideBorder(warp->centre_px)) {
+      track.raw_px = warp->centre_px;
+      track.anchor_linear = warp->linear;
+      ++stats_.anchor_refined;
+    } else {
+      ++stats_.anchor_rejected;
+    }
+    // (a track without a patch, born too close to the border, gets one as soon as it can)
+    if (!track.anchor || stats_.images - track.anchor_image >= options_.anchor_max_age) Anchor(image, &track);
+  }
+}
+
+void FeatureTracker::Anchor(const cv::Mat& image, TrackState* track) {
+  if (!options_.anchor_refinement) return;
+  std::optional<AffinePatch> patch = MakeAffinePatch(image, track->raw_px, options_.klt_window_px / 2);
+  track->anchor = patch ? std::make_shared<const AffinePatch>(std::move(*patch)) : nullptr;
+  track->anchor_image = stats_.images;
+  track->anchor_linear = cv::Matx22f::eye();
 }
 
 void FeatureTracker::RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now) {
@@ -247,6 +276,7 @@ void FeatureTracker::DetectNewCorners(const cv::Mat& image) {
     track.id = next_id_++;
     track.raw_px = inside[i];
     track.undistorted_px = undistorted[i];
+    Anchor(image, &track);
     tracks_.push_back(track);
     ++stats_.tracks_created;
   }

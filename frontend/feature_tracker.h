@@ -5,7 +5,10 @@
 //   2. pyramidal Lucas-Kanade from the previous image into this one; tracks that fail, leave the image
 //      (less than border_px from its edge) or, with backward_check, do not track back to where they came from
 //      are dropped; with refine_tracks (and subpixel_window_px > 0), each tracked point is refined by
-//      cv::cornerSubPix and keeps the refinement when it moved at most subpixel_max_shift_px;
+//      cv::cornerSubPix and keeps the refinement when it moved at most subpixel_max_shift_px; with
+//      anchor_refinement, each tracked point is then aligned again with the patch of its anchor image (where
+//      its track began or was last re-anchored) under an affine warp and keeps that result when it moved at
+//      most anchor_max_shift_px; tracks whose anchor is anchor_max_age images old are re-anchored here;
 //   3. on a published frame only (at most max_rate_hz, the first image always):
 //      a. undistortion of every tracked point (frontend/point_undistorter.h);
 //      b. RANSAC fundamental matrix between each track's undistorted pixel at the last published frame and
@@ -31,6 +34,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -38,6 +42,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/types.h"
+#include "frontend/affine_patch_aligner.h"
 #include "frontend/feature_tracker_options.h"
 #include "frontend/point_undistorter.h"
 
@@ -53,6 +58,8 @@ struct TrackerStats {
   int64_t spacing_drops = 0;      // dropped as too close to a longer track
   int64_t outside_undistorted = 0;  // dropped because the undistorted pixel left the image
   int64_t aged_out = 0;           // ended after max_track_length published frames
+  int64_t anchor_refined = 0;     // anchor refinements applied
+  int64_t anchor_rejected = 0;    // anchor refinements that failed or moved a point too far
 };
 
 class FeatureTracker {
@@ -73,10 +80,17 @@ class FeatureTracker {
     cv::Point2f raw_px;            // in the current image
     cv::Point2f undistorted_px;    // at the last published frame (then: now)
     int length = 0;                // published frames the track was seen in
+    // anchor_refinement: the patch around the track's point in its anchor image (none when it had too little
+    // texture), that image's index (stats_.images then) and the warp's linear part, anchor -> current image.
+    std::shared_ptr<const AffinePatch> anchor;
+    int64_t anchor_image = 0;
+    cv::Matx22f anchor_linear = cv::Matx22f::eye();
   };
 
   bool ShouldPublish(int64_t t_ns) const;
   void TrackIntoImage(const std::vector<cv::Mat>& pyramid);
+  void RefineAgainstAnchors(const cv::Mat& image);
+  void Anchor(const cv::Mat& image, TrackState* track);
   void RejectWithFundamental(const std::vector<cv::Point2f>& undistorted_now);
   void RefineCorners(const cv::Mat& image, std::vector<cv::Point2f>* points, double max_shift_px) const;
   void EndAgedTracks();
