@@ -4,8 +4,9 @@
 //                            frame), on a seeded synthetic texture seen by a camera moving 4 px, 0.17 deg and
 //                            0.2 % of zoom per frame (tracks leave the image and are replaced all the time);
 //                            variants: 0 default (VINS-Mono's settings), 1 + backward check, 2 + CLAHE,
-//                            3 + EuRoC-like lens distortion, 4 + anchor refinement (affine realignment of
-//                            every track with its first patch).
+//                            3 + EuRoC-like lens distortion, 4 anchor refinement (affine realignment of
+//                            every track with its first patch) with a 15 px window and patch, as
+//                            configs/paper_images.yaml.
 //
 // Run on one core: taskset -c 0 build/bench/bench_frontend --benchmark_repetitions=10
 //                  --benchmark_report_aggregates_only=true   (then read min and median)
@@ -44,7 +45,10 @@ void BM_TrackFrame(benchmark::State& state) {
     case 1: options.backward_check = true; break;
     case 2: options.clahe = true; break;
     case 3: camera.distortion = {-0.28, 0.074, 0.0002, 0.00002}; break;
-    case 4: options.anchor_refinement = true; break;
+    case 4:
+      options.anchor_refinement = true;
+      options.klt_window_px = options.anchor_patch_px = 15;
+      break;
     default: break;
   }
   const std::vector<cv::Mat>& images = Sequence();

@@ -151,14 +151,14 @@ void FeatureTracker::RefineAgainstAnchors(const cv::Mat& image) {
     } else {
       ++stats_.anchor_rejected;
     }
-    // (a track without a patch, born too close to the border, gets one as soon as it can)
+    // (a track without a patch gets one as soon as it can)
     if (!track.anchor || stats_.images - track.anchor_image >= options_.anchor_max_age) Anchor(image, &track);
   }
 }
 
 void FeatureTracker::Anchor(const cv::Mat& image, TrackState* track) {
   if (!options_.anchor_refinement) return;
-  std::optional<AffinePatch> patch = MakeAffinePatch(image, track->raw_px, options_.klt_window_px / 2);
+  std::optional<AffinePatch> patch = MakeAffinePatch(image, track->raw_px, options_.anchor_patch_px / 2);
   track->anchor = patch ? std::make_shared<const AffinePatch>(std::move(*patch)) : nullptr;
   track->anchor_image = stats_.images;
   track->anchor_linear = cv::Matx22f::eye();

@@ -80,8 +80,9 @@ class FeatureTracker {
     cv::Point2f raw_px;            // in the current image
     cv::Point2f undistorted_px;    // at the last published frame (then: now)
     int length = 0;                // published frames the track was seen in
-    // anchor_refinement: the patch around the track's point in its anchor image (none when it had too little
-    // texture), that image's index (stats_.images then) and the warp's linear part, anchor -> current image.
+    // anchor_refinement: the patch around the track's point in its anchor image (none when the point was too
+    // close to the border or the patch had too little texture: then the next image tries again), that image's
+    // index (stats_.images then) and the warp's linear part, anchor -> current image.
     std::shared_ptr<const AffinePatch> anchor;
     int64_t anchor_image = 0;
     cv::Matx22f anchor_linear = cv::Matx22f::eye();

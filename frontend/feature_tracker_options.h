@@ -36,7 +36,7 @@ struct FeatureTrackerOptions {
   bool backward_check = false;     // also track back into the previous frame and drop inconsistent tracks
   double backward_check_px = 0.5;  // largest distance between a point and its back-tracked position
   // Anchor refinement (vigil's, not VINS-Mono's): after the frame-to-frame step, each tracked point is aligned
-  // again with its anchor, the klt_window_px patch around the pixel where its track began (or was last
+  // again with its anchor, the anchor_patch_px patch around the pixel where its track began (or was last
   // re-anchored), under an affine warp (frontend/affine_patch_aligner.h), starting from the frame-to-frame
   // result and the track's last warp. Frame-to-frame steps each add a small error that accumulates along the
   // track; against the anchor it does not add up, and the affine warp follows the patch's rotation, scale and
@@ -45,6 +45,7 @@ struct FeatureTrackerOptions {
   // images. A refinement that fails, or moves the point farther than anchor_max_shift_px from the
   // frame-to-frame result, is not applied.
   bool anchor_refinement = false;
+  int anchor_patch_px = 21;           // side of the anchor patch (odd; an even side gets one pixel more)
   int anchor_max_age = 1000;          // images between re-anchorings
   double anchor_max_shift_px = 1.0;
   // Outlier rejection: RANSAC fundamental matrix between the last published frame and this one, on the
@@ -95,6 +96,7 @@ struct FeatureTrackerOptions {
     v.Field("anchor_refinement", anchor_refinement,
             "vigil's, not VINS-Mono's: align each tracked point again with the patch its track began with, "
             "under an affine warp");
+    v.Field("anchor_patch_px", anchor_patch_px, "side of the anchor refinement's patch [px]", Bounds::Closed(5, 61));
     v.Field("anchor_max_age", anchor_max_age, "images after which a track is re-anchored at the current image",
             Bounds::AtLeast(1));
     v.Field("anchor_max_shift_px", anchor_max_shift_px,
