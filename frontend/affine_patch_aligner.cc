@@ -72,11 +72,12 @@ std::optional<AffineWarp> AlignAffinePatch(const AffinePatch& patch, const cv::M
                                            const AffineAlignOptions& options) {
   const int half = patch.half;
   const float h = static_cast<float>(half);
+  const cv::Point2f corners[] = {{-h, -h}, {h, -h}, {-h, h}, {h, h}};
   cv::Matx22f A = start.linear;
   cv::Point2f c = start.centre_px;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     // The warped patch lies inside the image when its four corners do (an affine image of a square).
-    for (const cv::Point2f corner : {cv::Point2f(-h, -h), cv::Point2f(h, -h), cv::Point2f(-h, h), cv::Point2f(h, h)}) {
+    for (const cv::Point2f& corner : corners) {
       const cv::Point2f p = A * corner + c;
       if (!Inside(image, p.x, p.y)) return std::nullopt;
     }
@@ -104,7 +105,7 @@ std::optional<AffineWarp> AlignAffinePatch(const AffinePatch& patch, const cv::M
     const cv::Point2f c_new = c - cv::Point2f(static_cast<float>(shift[0]), static_cast<float>(shift[1]));
     // Convergence: the largest motion of a patch corner in this step.
     float moved = 0.0f;
-    for (const cv::Point2f corner : {cv::Point2f(-h, -h), cv::Point2f(h, -h), cv::Point2f(-h, h), cv::Point2f(h, h)})
+    for (const cv::Point2f& corner : corners)
       moved = std::max(moved, static_cast<float>(cv::norm((A_new - A) * corner + (c_new - c))));
     A = A_new;
     c = c_new;
