@@ -1,16 +1,16 @@
 #include "frontend/corner_detector.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
 namespace vigil::frontend {
 namespace {
 
-// cv::goodFeaturesToTrack's defaults: 3 x 3 Sobel gradients summed over a 3 x 3 block (MinEigenScore).
-constexpr int kSobelSize = 3;
 // Non-maximum suppression over 3 x 3 neighbourhoods.
 constexpr int kNmsRadius = 1;
 
@@ -19,58 +19,13 @@ struct Candidate {
   int x, y;
 };
 
-// BORDER_REFLECT_101 index (OpenCV's default border, as in cv::cornerMinEigenVal).
-int Reflect(int i, int n) { return i < 0 ? -i : (i >= n ? 2 * n - 2 - i : i); }
-
-// s[x] = v[x - 1] + v[x] + v[x + 1] over a row of w >= 2 values (BORDER_REFLECT_101 at its ends).
-void SumAcross3(const int32_t* v, int w, int32_t* s) {
-  s[0] = v[0] + 2 * v[1];
-  for (int x = 1; x + 1 < w; ++x) s[x] = v[x - 1] + v[x] + v[x + 1];
-  s[w - 1] = v[w - 1] + 2 * v[w - 2];
-}
-
-// The rows of `across` summed over 3 rows (BORDER_REFLECT_101 at the first and last).
-cv::Mat SumDown3(const cv::Mat& across) {
-  cv::Mat out(across.size(), CV_32SC1);
-  const int w = across.cols;
-  for (int y = 0; y < across.rows; ++y) {
-    const int32_t* a = across.ptr<int32_t>(Reflect(y - 1, across.rows));
-    const int32_t* b = across.ptr<int32_t>(y);
-    const int32_t* c = across.ptr<int32_t>(Reflect(y + 1, across.rows));
-    int32_t* o = out.ptr<int32_t>(y);
-    for (int x = 0; x < w; ++x) o[x] = a[x] + b[x] + c[x];
-  }
-  return out;
-}
-
-// The gradients' second-moment matrix [xx xy; xy yy] summed over each pixel's 3 x 3 block, from 3 x 3 Sobel
-// gradients: exact integers (|gradient| <= 1020, so a block sum stays below 2^24).
-struct SecondMoments {
-  cv::Mat xx, xy, yy;  // CV_32SC1
+// A run of pixels of one image row: [x0, x1).
+struct Run {
+  int y, x0, x1;
 };
 
-SecondMoments BlockMoments(const cv::Mat& image) {
-  cv::Mat dx, dy;
-  cv::Sobel(image, dx, CV_16S, 1, 0, kSobelSize, 1.0, 0.0, cv::BORDER_REFLECT_101);
-  cv::Sobel(image, dy, CV_16S, 0, 1, kSobelSize, 1.0, 0.0, cv::BORDER_REFLECT_101);
-  const int w = image.cols;
-  cv::Mat xx(image.size(), CV_32SC1), xy(image.size(), CV_32SC1), yy(image.size(), CV_32SC1);
-  std::vector<int32_t> pxx(static_cast<std::size_t>(w)), pxy(pxx.size()), pyy(pxx.size());
-  for (int y = 0; y < image.rows; ++y) {
-    const int16_t* gx = dx.ptr<int16_t>(y);
-    const int16_t* gy = dy.ptr<int16_t>(y);
-    for (int x = 0; x < w; ++x) {
-      const int32_t ex = gx[x], ey = gy[x];
-      pxx[static_cast<std::size_t>(x)] = ex * ex;
-      pxy[static_cast<std::size_t>(x)] = ex * ey;
-      pyy[static_cast<std::size_t>(x)] = ey * ey;
-    }
-    SumAcross3(pxx.data(), w, xx.ptr<int32_t>(y));
-    SumAcross3(pxy.data(), w, xy.ptr<int32_t>(y));
-    SumAcross3(pyy.data(), w, yy.ptr<int32_t>(y));
-  }
-  return {SumDown3(xx), SumDown3(xy), SumDown3(yy)};
-}
+// BORDER_REFLECT_101 index (OpenCV's default border, as in cv::cornerMinEigenVal).
+int Reflect(int i, int n) { return i < 0 ? -i : (i >= n ? 2 * n - 2 - i : i); }
 
 // The smaller eigenvalue of [a b; b c]: the Shi-Tomasi score, proportional to cv::cornerMinEigenVal's (which
 // scales the gradients and rounds in float); the ratio to the best score, all that matters here, is the same.
@@ -80,45 +35,140 @@ float MinEigenvalue(int32_t a, int32_t b, int32_t c) {
   return static_cast<float>(half_trace - std::sqrt(half_diff * half_diff + static_cast<double>(b) * b));
 }
 
-// Scores at every open mask pixel and its suppression neighbours (zero elsewhere), and the best score on an
-// open pixel.
-cv::Mat ScoresWhereOpen(const cv::Mat& image, const cv::Mat& mask, double* best_open) {
-  const SecondMoments m = BlockMoments(image);
-  cv::Mat needed;
-  cv::dilate(mask, needed, cv::Mat(), cv::Point(-1, -1), kNmsRadius);
-  cv::Mat scores(image.size(), CV_32FC1, cv::Scalar(0));
-  float best = 0.0f;
-  for (int y = 0; y < image.rows; ++y) {
-    const uchar* need = needed.ptr<uchar>(y);
-    const uchar* open = mask.ptr<uchar>(y);
-    const int32_t* xx = m.xx.ptr<int32_t>(y);
-    const int32_t* xy = m.xy.ptr<int32_t>(y);
-    const int32_t* yy = m.yy.ptr<int32_t>(y);
-    float* row = scores.ptr<float>(y);
-    for (int x = 0; x < image.cols; ++x) {
-      if (!need[x]) continue;
-      row[x] = MinEigenvalue(xx[x], xy[x], yy[x]);
-      if (open[x]) best = std::max(best, row[x]);
-    }
+// Index of the first pixel of row[x, end) that is nonzero (`nonzero`) or zero (else); `end` if none. Eight
+// pixels at a time where it can: the tracker's masks are long runs.
+int FindNext(const uchar* row, int x, int end, bool nonzero) {
+  constexpr uint64_t kLow = 0x0101010101010101ULL, kHigh = 0x8080808080808080ULL;
+  for (; x + 8 <= end; x += 8) {
+    uint64_t word;
+    std::memcpy(&word, row + x, sizeof(word));
+    const bool has_zero = ((word - kLow) & ~word & kHigh) != 0;
+    if (nonzero ? word != 0 : has_zero) break;
   }
-  *best_open = best;
-  return scores;
+  while (x < end && (row[x] != 0) != nonzero) ++x;
+  return x;
 }
 
-// Local maxima above `threshold` on open mask pixels, not on the image's outermost rows and columns.
-std::vector<Candidate> LocalMaxima(const cv::Mat& scores, const cv::Mat& mask, float threshold) {
+// The row runs of nonzero pixels of `mask`, row by row.
+std::vector<Run> NonzeroRuns(const cv::Mat& mask) {
+  std::vector<Run> runs;
+  for (int y = 0; y < mask.rows; ++y) {
+    const uchar* row = mask.ptr<uchar>(y);
+    for (int x = FindNext(row, 0, mask.cols, true); x < mask.cols;) {
+      const int x1 = FindNext(row, x, mask.cols, false);
+      runs.push_back({y, x, x1});
+      x = FindNext(row, x1, mask.cols, true);
+    }
+  }
+  return runs;
+}
+
+// Shi-Tomasi scores along row runs: the smaller eigenvalue of the second-moment matrix [xx xy; xy yy] of the
+// 3 x 3 Sobel gradients (cv::Sobel's kernel), summed over each pixel's 3 x 3 block, with BORDER_REFLECT_101 for
+// the gradients and for the block sums at the image border, as cv::cornerMinEigenVal. The sums are exact
+// integers (|gradient| <= 1020, so a block sum stays below 2^24).
+class RunScorer {
+ public:
+  explicit RunScorer(const cv::Mat& image) : width_(image.cols), height_(image.rows) {
+    cv::copyMakeBorder(image, padded_, 1, 1, 1, 1, cv::BORDER_REFLECT_101);
+    for (cv::Mat& plane : products_) plane.create(image.size(), CV_32SC1);
+    for (std::vector<int32_t>& sums : sums_) sums.resize(static_cast<std::size_t>(width_) + 2);
+  }
+
+  // The gradient products gx^2, gx gy, gy^2 at the run's pixels. Score reads those of the pixels within one
+  // pixel of its run (the block).
+  void Products(const Run& run) {
+    // The padded image is shifted by one pixel: its rows y, y + 1, y + 2 are the image's rows y - 1, y, y + 1.
+    const uchar* up = padded_.ptr<uchar>(run.y);
+    const uchar* mid = padded_.ptr<uchar>(run.y + 1);
+    const uchar* down = padded_.ptr<uchar>(run.y + 2);
+    int32_t* xx = products_[0].ptr<int32_t>(run.y);
+    int32_t* xy = products_[1].ptr<int32_t>(run.y);
+    int32_t* yy = products_[2].ptr<int32_t>(run.y);
+    const int x0 = run.x0, x1 = run.x1;  // (locals: the stores below could alias the run)
+    for (int x = x0; x < x1; ++x) {
+      const int32_t gx = (up[x + 2] - up[x]) + 2 * (mid[x + 2] - mid[x]) + (down[x + 2] - down[x]);
+      const int32_t gy = (down[x] + 2 * down[x + 1] + down[x + 2]) - (up[x] + 2 * up[x + 1] + up[x + 2]);
+      xx[x] = gx * gx;
+      xy[x] = gx * gy;
+      yy[x] = gy * gy;
+    }
+  }
+
+  // The scores of the run's pixels, into `scores` (the image's size, CV_32FC1).
+  void Score(const Run& run, cv::Mat* scores) {
+    // Down: the block's three rows, over the run and one pixel either side (sums_ index = column + 1).
+    const int a = Reflect(run.y - 1, height_), c = Reflect(run.y + 1, height_);
+    const int lo = std::max(run.x0 - 1, 0), hi = std::min(run.x1 + 1, width_);
+    for (std::size_t k = 0; k < products_.size(); ++k) {
+      const int32_t* pa = products_[k].ptr<int32_t>(a);
+      const int32_t* pb = products_[k].ptr<int32_t>(run.y);
+      const int32_t* pc = products_[k].ptr<int32_t>(c);
+      int32_t* sum = sums_[k].data() + 1;
+      for (int x = lo; x < hi; ++x) sum[x] = pa[x] + pb[x] + pc[x];
+      // BORDER_REFLECT_101 at the first and last columns
+      if (run.x0 == 0) sum[-1] = sum[1];
+      if (run.x1 == width_) sum[width_] = sum[width_ - 2];
+    }
+    // Across, then the score.
+    const int32_t* xx = sums_[0].data() + 1;
+    const int32_t* xy = sums_[1].data() + 1;
+    const int32_t* yy = sums_[2].data() + 1;
+    float* out = scores->ptr<float>(run.y);
+    const int x0 = run.x0, x1 = run.x1;
+    for (int x = x0; x < x1; ++x)
+      out[x] = MinEigenvalue(xx[x - 1] + xx[x] + xx[x + 1], xy[x - 1] + xy[x] + xy[x + 1],
+                             yy[x - 1] + yy[x] + yy[x + 1]);
+  }
+
+ private:
+  int width_, height_;
+  cv::Mat padded_;                       // the image with a 1-pixel BORDER_REFLECT_101 frame
+  std::array<cv::Mat, 3> products_;      // gx^2, gx gy, gy^2 (CV_32SC1), set where Products ran
+  std::array<std::vector<int32_t>, 3> sums_;  // one row's block sums down, with a column either side
+};
+
+// Scores at the open mask pixels and their suppression neighbours (the only ones the detection reads; the
+// others are left unset), the runs of open pixels, and the best score on an open pixel.
+struct OpenScores {
+  cv::Mat scores;  // CV_32FC1
+  std::vector<Run> open_runs;
+  float best_open = 0.0f;
+};
+
+OpenScores ScoresWhereOpen(const cv::Mat& image, const cv::Mat& mask) {
+  OpenScores out;
+  out.scores.create(image.size(), CV_32FC1);
+  // Scores are needed at open pixels and their suppression neighbours, gradient products within one more pixel
+  // (a score's block).
+  cv::Mat needed, reach;
+  cv::dilate(mask, needed, cv::Mat(), cv::Point(-1, -1), kNmsRadius);
+  cv::dilate(needed, reach, cv::Mat());
+  RunScorer scorer(image);
+  for (const Run& run : NonzeroRuns(reach)) scorer.Products(run);
+  for (const Run& run : NonzeroRuns(needed)) scorer.Score(run, &out.scores);
+  out.open_runs = NonzeroRuns(mask);
+  for (const Run& run : out.open_runs) {
+    const float* row = out.scores.ptr<float>(run.y);
+    for (int x = run.x0; x < run.x1; ++x) out.best_open = std::max(out.best_open, row[x]);
+  }
+  return out;
+}
+
+// Local maxima above `threshold` on the open runs, not on the image's outermost rows and columns.
+std::vector<Candidate> LocalMaxima(const cv::Mat& scores, const std::vector<Run>& open_runs, float threshold) {
   std::vector<Candidate> out;
-  for (int y = 1; y + 1 < scores.rows; ++y) {
-    const float* above = scores.ptr<float>(y - 1);
-    const float* row = scores.ptr<float>(y);
-    const float* below = scores.ptr<float>(y + 1);
-    const uchar* open = mask.ptr<uchar>(y);
-    for (int x = 1; x + 1 < scores.cols; ++x) {
+  for (const Run& run : open_runs) {
+    if (run.y < 1 || run.y + 1 >= scores.rows) continue;
+    const float* above = scores.ptr<float>(run.y - 1);
+    const float* row = scores.ptr<float>(run.y);
+    const float* below = scores.ptr<float>(run.y + 1);
+    for (int x = std::max(run.x0, 1); x < std::min(run.x1, scores.cols - 1); ++x) {
       const float s = row[x];
-      if (s <= threshold || !open[x]) continue;
+      if (s <= threshold) continue;
       const bool is_max = s >= row[x - 1] && s >= row[x + 1] && s >= above[x - 1] && s >= above[x] &&
                           s >= above[x + 1] && s >= below[x - 1] && s >= below[x] && s >= below[x + 1];
-      if (is_max) out.push_back({s, x, y});
+      if (is_max) out.push_back({s, x, run.y});
     }
   }
   return out;
@@ -170,12 +220,12 @@ std::vector<cv::Point2f> SelectSpaced(std::vector<Candidate> candidates, const C
 std::vector<cv::Point2f> DetectShiTomasiCorners(const cv::Mat& image, const cv::Mat& mask,
                                                 const CornerDetectorOptions& options) {
   CV_Assert(image.type() == CV_8UC1 && mask.type() == CV_8UC1 && image.size() == mask.size());
-  if (options.max_corners <= 0) return {};
-  double best = 0.0;
-  const cv::Mat scores = ScoresWhereOpen(image, mask, &best);
-  if (best <= 0.0) return {};
-  const float threshold = static_cast<float>(best * options.quality_level);
-  return SelectSpaced(LocalMaxima(scores, mask, threshold), options, image.size());
+  // (a corner lies off the outermost rows and columns: an image under 3 x 3 pixels has none)
+  if (options.max_corners <= 0 || image.cols < 3 || image.rows < 3) return {};
+  const OpenScores open = ScoresWhereOpen(image, mask);
+  if (open.best_open <= 0.0f) return {};
+  const float threshold = static_cast<float>(static_cast<double>(open.best_open) * options.quality_level);
+  return SelectSpaced(LocalMaxima(open.scores, open.open_runs, threshold), options, image.size());
 }
 
 }  // namespace vigil::frontend

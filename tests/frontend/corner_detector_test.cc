@@ -1,6 +1,7 @@
 #include "frontend/corner_detector.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <tuple>
 #include <vector>
@@ -57,6 +58,89 @@ TEST(CornerDetector, FindsGoodFeaturesToTracksCorners) {
       EXPECT_GE(static_cast<double>(Common(corners, expected)), 0.95 * static_cast<double>(expected.size()))
           << discs << " discs, seed " << seed;
     }
+  }
+}
+
+// The detector's definition computed the plain way, over the whole image: cv::Sobel gradients, their products
+// summed over 3 x 3 blocks by cv::boxFilter (BORDER_REFLECT_101, exact in double), the smaller eigenvalue;
+// 3 x 3 local maxima on open pixels off the outermost rows and columns; strongest first (ties: the later
+// pixel), each min_distance_px from the stronger ones kept, by brute force.
+std::vector<cv::Point2f> PlainShiTomasi(const cv::Mat& image, const cv::Mat& mask,
+                                        const CornerDetectorOptions& options) {
+  cv::Mat dx, dy;
+  cv::Sobel(image, dx, CV_64F, 1, 0, 3, 1.0, 0.0, cv::BORDER_REFLECT_101);
+  cv::Sobel(image, dy, CV_64F, 0, 1, 3, 1.0, 0.0, cv::BORDER_REFLECT_101);
+  cv::Mat xx, xy, yy;
+  cv::boxFilter(dx.mul(dx), xx, CV_64F, cv::Size(3, 3), cv::Point(-1, -1), false, cv::BORDER_REFLECT_101);
+  cv::boxFilter(dx.mul(dy), xy, CV_64F, cv::Size(3, 3), cv::Point(-1, -1), false, cv::BORDER_REFLECT_101);
+  cv::boxFilter(dy.mul(dy), yy, CV_64F, cv::Size(3, 3), cv::Point(-1, -1), false, cv::BORDER_REFLECT_101);
+  cv::Mat score(image.size(), CV_32FC1);
+  for (int y = 0; y < image.rows; ++y)
+    for (int x = 0; x < image.cols; ++x) {
+      const double a = xx.at<double>(y, x), b = xy.at<double>(y, x), c = yy.at<double>(y, x);
+      score.at<float>(y, x) =
+          static_cast<float>(0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b));
+    }
+  double best = 0.0;
+  cv::minMaxLoc(score, nullptr, &best, nullptr, nullptr, mask);
+  if (best <= 0.0) return {};
+  const float threshold = static_cast<float>(best * options.quality_level);
+  struct Corner {
+    float score;
+    int x, y;
+  };
+  std::vector<Corner> corners;
+  for (int y = 1; y + 1 < image.rows; ++y)
+    for (int x = 1; x + 1 < image.cols; ++x) {
+      const float s = score.at<float>(y, x);
+      bool is_max = mask.at<uchar>(y, x) != 0 && s > threshold;
+      for (int v = -1; v <= 1 && is_max; ++v)
+        for (int u = -1; u <= 1; ++u) is_max = is_max && s >= score.at<float>(y + v, x + u);
+      if (is_max) corners.push_back({s, x, y});
+    }
+  std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
+    return std::tie(b.score, b.y, b.x) < std::tie(a.score, a.y, a.x);
+  });
+  std::vector<cv::Point2f> kept;
+  for (const Corner& c : corners) {
+    if (static_cast<int>(kept.size()) >= options.max_corners) break;
+    const cv::Point2f p(static_cast<float>(c.x), static_cast<float>(c.y));
+    if (std::all_of(kept.begin(), kept.end(), [&](const cv::Point2f& k) {
+          return cv::norm(k - p) >= options.min_distance_px;
+        }))
+      kept.push_back(p);
+  }
+  return kept;
+}
+
+// The score is computed only along the mask's open runs, from exact integer sums: the corners are exactly
+// the definition's, in the same order, whatever the mask's shape, wherever it meets the image border, and for
+// image sides that are not multiples of anything.
+TEST(CornerDetector, MatchesItsDefinitionExactly) {
+  const std::vector<cv::Size> sizes = {{640, 480}, {97, 33}, {3, 3}, {5, 200}};
+  for (const cv::Size size : sizes) {
+    // A texture, and pixel noise: its dense maxima make the border pixels' scores matter.
+    cv::Mat noise(size, CV_8UC1);
+    cv::RNG rng(41);
+    rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+    const std::vector<cv::Mat> images = {MakeTexture(size.width, size.height, 40), noise};
+    // Masks: open; discs; open only at single pixels (the four image corners, an edge and the middle).
+    cv::Mat dots = cv::Mat::zeros(size, CV_8UC1);
+    for (const cv::Point p : {cv::Point(0, 0), cv::Point(size.width - 1, 0), cv::Point(0, size.height - 1),
+                              cv::Point(size.width - 1, size.height - 1), cv::Point(1, size.height / 2),
+                              cv::Point(size.width / 2, size.height / 2)})
+      dots.at<uchar>(p) = 1;  // (any nonzero value opens a pixel)
+    const std::vector<cv::Mat> masks = {cv::Mat(size, CV_8UC1, cv::Scalar(255)), DiscMask(size, 60, 30, 1),
+                                        DiscMask(size, 140, 30, 2), dots};
+    for (std::size_t i = 0; i < images.size(); ++i)
+      for (std::size_t m = 0; m < masks.size(); ++m)
+        for (const double min_distance_px : {0.0, 10.0, 30.0}) {
+          CornerDetectorOptions options;
+          options.min_distance_px = min_distance_px;
+          EXPECT_EQ(DetectShiTomasiCorners(images[i], masks[m], options),
+                    PlainShiTomasi(images[i], masks[m], options))
+              << size << ", image " << i << ", mask " << m << ", min distance " << min_distance_px;
+        }
   }
 }
 
