@@ -2,8 +2,11 @@
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <map>
+
+#include <glog/logging.h>
 
 #include "app/commands.h"
 #include "core/error.h"
@@ -13,6 +16,14 @@ namespace {
 std::map<const CLI::App*, Action>& Actions() {
   static std::map<const CLI::App*, Action> actions;
   return actions;
+}
+
+// Ceres reports through glog. Its warnings are the Levenberg-Marquardt loop's own bookkeeping (a linear solve
+// that failed, e.g. on a badly conditioned point of the initial bundle adjustment, and is retried with more
+// damping), printed from worker threads across a sweep's progress bar; vigil checks every solve's outcome
+// itself. Errors still show; GLOG_minloglevel=0 in the environment shows the warnings again.
+void QuietSolverWarnings() {
+  if (std::getenv("GLOG_minloglevel") == nullptr) FLAGS_minloglevel = google::GLOG_ERROR;
 }
 }  // namespace
 
@@ -44,6 +55,7 @@ std::vector<std::string> ConfigArgs::AllOverrides() const {
 
 int main(int argc, char** argv) {
   using namespace vigil::app;
+  QuietSolverWarnings();
   CLI::App root{"vigil: a laboratory for visual-inertial odometry under IMU faults"};
   root.require_subcommand(1);
   root.set_version_flag("--version", "vigil 0.1.0");
