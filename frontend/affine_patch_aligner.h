@@ -1,6 +1,7 @@
 // Affine alignment of one image patch: where, and under which local affine warp, a patch of an earlier image
-// (the anchor) appears in a later one. The tracker's anchor refinement (frontend/feature_tracker.h) uses it to
-// realign each tracked point with the view its track began in, so that frame-to-frame errors do not add up.
+// (the anchor) appears in a later one. The tracker's anchor refinement (frontend/feature_tracker.h) uses it
+// to realign each tracked point with the view its track began in, so that frame-to-frame errors do not add
+// up.
 //
 // Inverse-compositional Lucas-Kanade (Baker and Matthews, "Lucas-Kanade 20 years on", 2004) with the six
 // parameters of an affine warp: the patch's intensities T(u) at offsets u from the anchor pixel, u in
@@ -20,15 +21,17 @@
 namespace vigil::frontend {
 
 struct AffinePatch {
-  int half = 0;                                // the patch is (2 half + 1)^2 pixels
-  std::vector<float> intensity;                // T(u), row-major
-  std::vector<Eigen::Matrix<float, 6, 1>> steepest;  // dT/dp of each pixel (p: dc_x, dc_y, dA00, dA01, dA10, dA11)
+  int half = 0;                           // the patch is (2 half + 1)^2 pixels
+  std::vector<float> intensity;           // T(u), row-major
+  std::vector<float> offset_u, offset_v;  // u, row-major
+  // dT/dp of each pixel (p: dc_x, dc_y, dA00, dA01, dA10, dA11), padded with two zeros to two SIMD packets
+  std::vector<Eigen::Matrix<float, 8, 1>> steepest;
   Eigen::Matrix<double, 6, 6> hessian_inverse;
 };
 
-// The patch of `image` (8-bit, one channel) around `centre_px`, sampled bilinearly at centre_px + u, or nothing
-// when it does not lie inside the image (with one pixel to spare for the gradients) or has too little texture
-// for all six parameters (a singular Hessian).
+// The patch of `image` (8-bit, one channel) around `centre_px`, sampled bilinearly at centre_px + u, or
+// nothing when it does not lie inside the image (with one pixel to spare for the gradients) or has too little
+// texture for all six parameters (a singular Hessian).
 std::optional<AffinePatch> MakeAffinePatch(const cv::Mat& image, const cv::Point2f& centre_px, int half);
 
 struct AffineAlignOptions {
@@ -43,7 +46,7 @@ struct AffineWarp {
 
 // Aligns `patch` with `image` from `start`; the converged warp, or nothing when the warped patch leaves the
 // image or the iterations do not converge.
-std::optional<AffineWarp> AlignAffinePatch(const AffinePatch& patch, const cv::Mat& image, const AffineWarp& start,
-                                           const AffineAlignOptions& options);
+std::optional<AffineWarp> AlignAffinePatch(const AffinePatch& patch, const cv::Mat& image,
+                                           const AffineWarp& start, const AffineAlignOptions& options);
 
 }  // namespace vigil::frontend
