@@ -115,13 +115,12 @@ void GradientProducts(const uchar* __restrict up, const uchar* __restrict mid, c
   }
 }
 
-// Shi-Tomasi scores row by row: the smaller eigenvalue of the second-moment matrix [xx xy; xy yy] of the 3 x
-// 3 Sobel gradients (cv::Sobel's kernel), summed over each pixel's 3 x 3 block, with BORDER_REFLECT_101 for
-// the gradients and for the block sums at the image border, as cv::cornerMinEigenVal. The sums are exact
-// integers
-// (|gradient| <= 1020, so a block sum stays below 2^24). The gradient products of the last three rows and the
-// scores of the last three rows are kept (ring buffers of rows), all that the block sums and the 3 x 3
-// non-maximum suppression read: the working set stays in the cache.
+// Shi-Tomasi scores row by row: the smaller eigenvalue of the second-moment matrix [xx xy; xy yy] of the
+// 3 x 3 Sobel gradients (cv::Sobel's kernel), summed over each pixel's 3 x 3 block, with BORDER_REFLECT_101
+// for the gradients and for the block sums at the image border, as cv::cornerMinEigenVal. The sums are exact
+// integers (|gradient| <= 1020, so a block sum stays below 2^24). Only the gradient products and the scores
+// of the last three rows are kept (ring buffers of rows), all that the block sums and the 3 x 3 non-maximum
+// suppression read: the working set stays in the cache.
 class RowScorer {
  public:
   explicit RowScorer(const cv::Mat& image) : width_(image.cols), height_(image.rows) {
@@ -135,8 +134,7 @@ class RowScorer {
 
   // The gradient products gx^2, gx gy, gy^2 of row y at the run's pixels.
   void Products(int y, const Run& run) {
-    // The padded image is shifted by one pixel: its rows y, y + 1, y + 2 are the image's rows y - 1, y, y
-    // + 1.
+    // The padded image is shifted by one pixel: its rows y .. y + 2 are the image's rows y - 1 .. y + 1.
     GradientProducts(padded_.ptr<uchar>(y), padded_.ptr<uchar>(y + 1), padded_.ptr<uchar>(y + 2), run.x0,
                      run.x1, Product(0, y), Product(1, y), Product(2, y));
   }
@@ -148,10 +146,10 @@ class RowScorer {
     const int a = Reflect(y - 1, height_), c = Reflect(y + 1, height_);
     const int lo = std::max(run.x0 - 1, 0), hi = std::min(run.x1 + 1, width_);
     for (int k = 0; k < kPlanes; ++k) {
-      const int32_t* __restrict pa = Product(k, a);
-      const int32_t* __restrict pb = Product(k, y);
-      const int32_t* __restrict pc = Product(k, c);
-      int32_t* __restrict sum = sums_[static_cast<std::size_t>(k)].data() + 1;
+      const int32_t* pa = Product(k, a);
+      const int32_t* pb = Product(k, y);
+      const int32_t* pc = Product(k, c);
+      int32_t* sum = sums_[static_cast<std::size_t>(k)].data() + 1;
       for (int x = lo; x < hi; ++x) sum[x] = pa[x] + pb[x] + pc[x];
       // BORDER_REFLECT_101 at the first and last columns
       if (run.x0 == 0) sum[-1] = sum[1];
@@ -160,8 +158,8 @@ class RowScorer {
     // Across, then the score: half trace - sqrt(half difference^2 + xy^2), in double as one array expression.
     const int n = run.x1 - run.x0;
     for (int k = 0; k < kPlanes; ++k) {
-      const int32_t* __restrict sum = sums_[static_cast<std::size_t>(k)].data() + 1 + run.x0;
-      double* __restrict block = block_[static_cast<std::size_t>(k)].data();
+      const int32_t* sum = sums_[static_cast<std::size_t>(k)].data() + 1 + run.x0;
+      double* block = block_[static_cast<std::size_t>(k)].data();
       for (int i = 0; i < n; ++i) block[i] = static_cast<double>(sum[i - 1] + sum[i] + sum[i + 1]);
     }
     const auto xx = block_[0].head(n), xy = block_[1].head(n), yy = block_[2].head(n);
