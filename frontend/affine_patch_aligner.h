@@ -21,9 +21,11 @@
 namespace vigil::frontend {
 
 struct AffinePatch {
-  int half = 0;                           // the patch is (2 half + 1)^2 pixels
-  std::vector<float> intensity;           // T(u), row-major
-  std::vector<float> offset_u, offset_v;  // u, row-major
+  int half = 0;                  // the patch is (2 half + 1)^2 pixels
+  std::vector<float> intensity;  // T(u), row-major
+  // u, row-major: the same for every patch of this half, kept with it (a patch is made once and aligned at
+  // every image of its track) so that an iteration computes its sample coordinates in one vectorized loop
+  std::vector<float> offset_u, offset_v;
   // dT/dp of each pixel (p: dc_x, dc_y, dA00, dA01, dA10, dA11), padded with two zeros to two SIMD packets
   std::vector<Eigen::Matrix<float, 8, 1>> steepest;
   Eigen::Matrix<double, 6, 6> hessian_inverse;
