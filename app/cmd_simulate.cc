@@ -1,4 +1,4 @@
-// `vigil simulate`: writes a simulated dataset directory (formats.md) from a run configuration.
+// `vigil simulate`: writes a simulated dataset directory (docs/formats.md) from a run configuration.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

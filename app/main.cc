@@ -1,4 +1,4 @@
-// vigil: visual-inertial odometry under IMU faults. See README.md and ../shared/spec/cli.md.
+// vigil: visual-inertial odometry under IMU faults. See README.md and docs/cli.md.
 #include <charconv>
 #include <cstdint>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Pinhole camera model with its body extrinsics, as in camera.yaml (formats.md).
+// Pinhole camera model with its body extrinsics, as in camera.yaml (docs/formats.md).
 //
 // A point p_C in the camera frame (x right, y down, z forward) is seen at
 //   (u, v) = (fx x/z + cx, fy y/z + cy)   when z > 0 and the pixel lies inside [0, width) x [0, height).

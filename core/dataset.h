@@ -1,4 +1,4 @@
-// The dataset directory of formats.md, in memory and on disk.
+// The dataset directory of docs/formats.md, in memory and on disk.
 //
 // `vigil simulate` writes it, `vigil clean` and `vigil run --dataset` read it. Every reader validates what it
 // reads (column count, finite numbers, strictly increasing timestamps) and reports "file:line: reason".

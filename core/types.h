@@ -1,6 +1,6 @@
 // Shared value types that flow between vigil's stages (sim -> detectors -> estimator -> experiments).
 //
-// Frame conventions (see ../shared/spec/formats.md):
+// Frame conventions (see docs/formats.md):
 //   W  world frame, z up, gravity g_W = (0, 0, -g).
 //   B  body frame = IMU frame.
 //   C  camera frame: x right, y down, z forward (optical axis).

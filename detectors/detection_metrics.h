@@ -38,7 +38,7 @@ DetectionMetrics EvaluateDetection(const ImuStream& raw, const DetectionResult& 
 // RMS of |a_t - b_t| over all six axes (streams of equal length, else std::invalid_argument).
 double ImuRmsDifference(const ImuStream& a, const ImuStream& b);
 
-// The "detection" object of metrics.json / detection.json (formats.md): flag counts always; precision,
+// The "detection" object of metrics.json / detection.json (docs/formats.md): flag counts always; precision,
 // recall, f1, glitched and true counts when `with_glitches`; "imu_rmse_vs_clean": {raw, cleaned} when
 // `with_clean`.
 nlohmann::json DetectionJson(const DetectionMetrics& metrics, bool with_glitches, bool with_clean);

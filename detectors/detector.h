@@ -58,7 +58,7 @@ struct DetectionResult {
 DetectionResult DetectAndMitigate(const DetectorOptions& options, const ImuStream& raw,
                                   const TemplateLibrary* templates = nullptr);
 
-// detections.csv (formats.md): "#timestamp [ns],flagged" with one 0/1 row per sample of `imu`.
+// detections.csv (docs/formats.md): "#timestamp [ns],flagged" with one 0/1 row per sample of `imu`.
 std::string DetectionsCsv(const ImuStream& imu, const std::vector<uint8_t>& flagged);
 
 }  // namespace vigil::detectors

@@ -1,6 +1,6 @@
 // Options of the sliding-window visual-inertial estimator.
 //
-// Defaults are the reference values of VINS-Mono (../shared/spec/references.md, estimator section), except
+// Defaults are the reference values of VINS-Mono (docs/references.md, "VINS-Mono's estimator"), except
 // PriorOptions (VINS-Mono has no initial bias prior; see there).
 #pragma once
 

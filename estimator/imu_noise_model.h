@@ -14,7 +14,7 @@
 //   white noise:        per-sample std = density x sqrt(rate_hz)   (a sample averages the noise over dt);
 //   bias random walk:   per-sample std = density / sqrt(rate_hz)   (the std of the bias step over dt).
 // VINS-Mono's acc_n / gyr_n enter its preintegration covariance as per-sample standard deviations although
-// its configs call them densities (../shared/spec/references.md); its code also multiplies the bias-walk
+// its configs call them densities (docs/references.md); its code also multiplies the bias-walk
 // noise by dt once more, which this model does not copy (the bias-walk terms weigh little next to the white
 // noise, which is what the mis-settings change by factors of 3 to 50).
 #pragma once

@@ -1,5 +1,5 @@
-// Reading numbers out of a run's metrics.json (formats.md) without trusting its shape: a missing key, a null
-// or a non-number reads as NaN, so a failed run (which has no "ate") simply has no values.
+// Reading numbers out of a run's metrics.json (docs/formats.md) without trusting its shape: a missing key, a
+// null or a non-number reads as NaN, so a failed run (which has no "ate") simply has no values.
 #pragma once
 
 #include <initializer_list>

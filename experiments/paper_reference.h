@@ -1,4 +1,4 @@
-// The published numbers of tables 2-4 of Long et al., IFAC 2020 (../shared/spec/references.md), shown beside
+// The published numbers of tables 2-4 of Long et al., IFAC 2020 (docs/references.md), shown beside
 // the regenerated ones in summary.md. They are the paper's results, used for comparison only.
 #pragma once
 

@@ -1,5 +1,5 @@
-// metrics.json of a run (formats.md): status, seed, duration, stage wall times, estimator summary and timing
-// per frame, ATE, relative errors, coverage and detection statistics.
+// metrics.json of a run (docs/formats.md): status, seed, duration, stage wall times, estimator summary and
+// timing per frame, ATE, relative errors, coverage and detection statistics.
 #pragma once
 
 #include <cstdint>

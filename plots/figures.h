@@ -1,4 +1,4 @@
-// The six figures of issue 7, built from plain data (the loaders in render.h fill it from directories).
+// The six figures (docs/sweeps.md), built from plain data (the loaders in render.h fill it from directories).
 //
 //  1. Scenario: trajectory and landmarks in X-Y, X-Z, Y-Z and a 3-D perspective view.
 //  2. Glitches: one IMU axis over time with and without injected glitches, one panel per glitch setting.

@@ -1,5 +1,5 @@
-// What the figures read from run, sweep and dataset directories (formats.md), loaded through the contract
-// only.
+// What the figures read from run, sweep and dataset directories (docs/formats.md), loaded through the
+// contract only.
 //
 // A run is classified by its own config.yaml: the method is the detector (threshold -> "trunc", dtw -> "dtw",
 // none -> "original", others by their name) and the glitch setting is (glitch.enabled, glitch.mean,

@@ -10,7 +10,7 @@
 
 namespace vigil::sim {
 
-// Typical full-scale ranges of low-cost MEMS parts (../shared/spec/references.md, "Low-cost IMU ranges").
+// Typical full-scale ranges of low-cost MEMS parts (docs/references.md, "Low-cost IMU ranges").
 enum class SaturationPreset { kNone, kLowCost4g, kLowCost16g };
 
 // Clipping of each axis to +-range (an ADC at full scale). 0 means unbounded.

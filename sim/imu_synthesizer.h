@@ -1,4 +1,4 @@
-// IMU measurements and ground truth synthesized from a motion model (formats.md's sensor model).
+// IMU measurements and ground truth synthesized from a motion model (docs/formats.md's sensor model).
 //
 //   gyro:  w_m = w_B + b_g + n_g
 //   accel: a_m = R_WB^T (a_W - g_W) + b_a + n_a,   g_W = (0, 0, -g)

@@ -1,4 +1,4 @@
-// The simulator: a whole dataset (formats.md) from SimOptions and a seed.
+// The simulator: a whole dataset (docs/formats.md) from SimOptions and a seed.
 //
 // Simulate() chains the stages: motion model -> IMU + ground truth (imu_synthesizer) -> glitches
 // (glitch_injector) and the other IMU faults (imu_faults.h gives their order) -> landmarks -> feature tracks

@@ -1,8 +1,8 @@
 // Options of the VINS-style visual-inertial initialization (`estimator.vins`).
 //
-// Defaults follow the reference (references.md, "Initialization"): a reference frame needs more than 20
-// correspondences with the newest frame and more than 30 px mean parallax; the linear alignment fails when
-// the estimated |g| is more than 1 m/s^2 away from the nominal gravity or the scale is not positive.
+// Defaults follow the reference (docs/references.md, "VINS-Mono's estimator"): a reference frame needs more
+// than 20 correspondences with the newest frame and more than 30 px mean parallax; the linear alignment fails
+// when the estimated |g| is more than 1 m/s^2 away from the nominal gravity or the scale is not positive.
 #pragma once
 
 #include <cstdint>

@@ -39,7 +39,7 @@ TEST(EvaluateTrajectory, YawAndTranslationOffsetAlignsToZeroUnderPosYaw) {
   EXPECT_DOUBLE_EQ(ev.coverage, 1.0);
   EXPECT_NEAR(ev.ate_trans_m.max, 0.0, 1e-9);
   EXPECT_NEAR(ev.ate_rot_deg.max, 0.0, 1e-5);
-  EXPECT_NEAR(ev.gt_length_m, 119.0, 1.0);  // one loop is about 119 m (references.md)
+  EXPECT_NEAR(ev.gt_length_m, 119.0, 1.0);  // one loop is about 119 m (docs/references.md)
   ASSERT_EQ(ev.relative.size(), 5u);
   for (const auto& rel : ev.relative) {
     EXPECT_GT(rel.trans_m.n, 100) << rel.distance_m;

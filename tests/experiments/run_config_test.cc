@@ -12,7 +12,7 @@ using testing::InputErrorOf;
 using testing::TempDir;
 
 TEST(RunConfig, SpecKeysExistWithTheirTypes) {
-  // The keys that cli.md promises to scripts and tests.
+  // The keys that docs/cli.md promises to scripts and tests.
   const RunConfig c = LoadRunConfig(
       "", {"seed=5", "imu.rate_hz=400", "imu.noise.enabled=false", "camera.rate_hz=20",
            "camera.pixel_noise_px=0.5", "glitch.enabled=true", "glitch.mean=50", "glitch.std=10",

@@ -1,4 +1,4 @@
-// Synthetic run and sweep directories (formats.md) for the figure tests and the rendering benchmark.
+// Synthetic run and sweep directories (docs/formats.md) for the figure tests and the rendering benchmark.
 //
 // Ground truth comes from the simulator; the "estimate" is the ground truth seen in another frame (a yaw and
 // a translation, which the display alignment must undo) plus a drift that grows with the glitch mean and

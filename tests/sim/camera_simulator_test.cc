@@ -12,7 +12,7 @@
 namespace vigil::sim {
 namespace {
 
-// formats.md's projection, written independently of the simulator: (x, y, z) = T_BC^-1 T_WB^-1 p_W.
+// docs/formats.md's projection, written independently of the simulator: (x, y, z) = T_BC^-1 T_WB^-1 p_W.
 bool ProjectFromPose(const CameraModel& cam, const Eigen::Quaterniond& q_WB, const Eigen::Vector3d& p_WB,
                      const Eigen::Vector3d& p_W, Eigen::Vector2d* uv) {
   Eigen::Isometry3d T_WB = Eigen::Isometry3d::Identity();
