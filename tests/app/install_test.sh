@@ -8,7 +8,8 @@ build=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build" --prefix "$tmp/prefix" >/dev/null
-for f in bin/vigil share/vigil/configs/paper_sweep.yaml share/vigil/configs/paper.yaml share/doc/vigil/README.md; do
+for f in bin/vigil share/vigil/configs/paper_sweep.yaml share/vigil/configs/paper.yaml share/doc/vigil/README.md \
+  share/doc/vigil/docs/README.md share/doc/vigil/docs/cli.md; do
   [[ -f $tmp/prefix/$f ]] || { echo "missing after install: $f"; exit 1; }
 done
 # The installed tree moves as a whole.
