@@ -38,9 +38,11 @@ std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
-// One line of Markdown with its place: inside a fenced block (and the fence's info string) or prose.
+// One line of Markdown with its place: inside a fenced block (and the fence's info string) or prose. A prose
+// line carries the lines that continue its paragraph, joined with spaces, so that a code span or a link
+// broken across lines reads whole; headings and table rows stay lines of their own.
 struct MarkdownLine {
-  int number = 0;
+  int number = 0;  // of the first line
   std::string text;
   bool fenced = false;
   std::string fence_info;
@@ -49,6 +51,7 @@ struct MarkdownLine {
 std::vector<MarkdownLine> ParseLines(const std::string& text) {
   std::vector<MarkdownLine> out;
   bool fenced = false;
+  bool continues = false;  // the last prose line's paragraph goes on
   std::string info;
   int number = 0;
   for (const std::string& line : Lines(text)) {
@@ -57,9 +60,17 @@ std::vector<MarkdownLine> ParseLines(const std::string& text) {
     if (first != std::string::npos && line.compare(first, 3, "```") == 0) {
       fenced = !fenced;
       info = fenced ? line.substr(first + 3) : "";
+      continues = false;
+      continue;
+    }
+    const bool blank = first == std::string::npos;
+    const bool own_line = !blank && (line[first] == '#' || line[first] == '|');
+    if (!fenced && continues && !blank && !own_line) {
+      out.back().text += " " + line.substr(first);
       continue;
     }
     out.push_back({number, line, fenced, info});
+    continues = !fenced && !blank && !own_line;
   }
   return out;
 }
@@ -343,15 +354,21 @@ TEST(Documentation, TheChecksFindWhatIsWrong) {
   std::ofstream(dir / "docs" / "a.md") << "# A page\n\n## Two words\n";
   const fs::path page = dir / "docs" / "b.md";
   std::ofstream(page)
-      << "[ok](a.md#two-words) [top](../docs/) [here](#a-heading) `[code](x.md)`\n"
+      << "[ok](a.md#two-words) [top](../docs/) [here](#a-heading) `[code](x.md)`\n\n"
       << "[gone](missing.md) [anchor](a.md#three-words) [out](../../elsewhere/spec.md)\n"
       << "[web](https://example.org/x.md)\n\n# A heading\n```text\n[fenced](nowhere.md)\n```\n";
   const std::vector<std::string> broken = BrokenLinks(page, dir);
   fs::remove_all(dir);
   ASSERT_EQ(broken.size(), 3u);
-  EXPECT_EQ(broken[0], "docs/b.md:2: missing.md: no such file");
-  EXPECT_EQ(broken[1], "docs/b.md:2: a.md#three-words: no heading with this anchor");
-  EXPECT_EQ(broken[2], "docs/b.md:2: ../../elsewhere/spec.md: points outside the repository");
+  EXPECT_EQ(broken[0], "docs/b.md:3: missing.md: no such file");
+  EXPECT_EQ(broken[1], "docs/b.md:3: a.md#three-words: no heading with this anchor");
+  EXPECT_EQ(broken[2], "docs/b.md:3: ../../elsewhere/spec.md: points outside the repository");
+
+  const std::vector<MarkdownLine> lines =
+      ParseLines("Run `vigil run\nCONFIG --force` now.\n# Heading\nnext\n");
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(CodeSpans(lines[0].text), (std::vector<std::string>{"vigil run CONFIG --force"}));
+  EXPECT_EQ(lines[2].number, 4);
 
   EXPECT_EQ(HeadingAnchors("# Run directory\n## `vigil run` (one run)\n# Run directory\n"),
             (std::set<std::string>{"run-directory", "vigil-run-one-run", "run-directory-1"}));
