@@ -40,7 +40,8 @@ std::vector<std::string> Lines(const std::string& text) {
 
 // One line of Markdown with its place: inside a fenced block (and the fence's info string) or prose. A prose
 // line carries the lines that continue its paragraph, joined with spaces, so that a code span or a link
-// broken across lines reads whole; headings and table rows stay lines of their own.
+// broken across lines reads whole; headings and table rows stay lines of their own, and a list item starts a
+// new one.
 struct MarkdownLine {
   int number = 0;  // of the first line
   std::string text;
@@ -65,7 +66,8 @@ std::vector<MarkdownLine> ParseLines(const std::string& text) {
     }
     const bool blank = first == std::string::npos;
     const bool own_line = !blank && (line[first] == '#' || line[first] == '|');
-    if (!fenced && continues && !blank && !own_line) {
+    const bool list_item = !blank && std::regex_search(line.substr(first), std::regex(R"(^(-|\d+\.) )"));
+    if (!fenced && continues && !blank && !own_line && !list_item) {
       out.back().text += " " + line.substr(first);
       continue;
     }
@@ -365,8 +367,9 @@ TEST(Documentation, TheChecksFindWhatIsWrong) {
   EXPECT_EQ(broken[2], "docs/b.md:3: ../../elsewhere/spec.md: points outside the repository");
 
   const std::vector<MarkdownLine> lines =
-      ParseLines("Run `vigil run\nCONFIG --force` now.\n# Heading\nnext\n");
-  ASSERT_EQ(lines.size(), 3u);
+      ParseLines("Run `vigil run\nCONFIG --force` now.\n# Heading\nnext\n- item\n  goes on\n");
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[3].text, "- item goes on");
   EXPECT_EQ(CodeSpans(lines[0].text), (std::vector<std::string>{"vigil run CONFIG --force"}));
   EXPECT_EQ(lines[2].number, 4);
 
