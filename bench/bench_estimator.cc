@@ -2,7 +2,7 @@
 //   build/bench/bench_estimator
 //       whole 20 s and 200 s runs; counters: per-frame optimize / marginalize cost [ms], ATE [m]; with
 //       --benchmark_repetitions=10 also their median and minimum (one run varies by up to 1.8x on a shared
-//       machine; README, Development, for instruction counts)
+//       machine; docs/development.md, Benchmarks, for instruction counts)
 //   build/bench/bench_estimator --accuracy [seeds [estimator.yaml [nominal]]]
 //       ATE RMSE (posyaw) per seed, nominal and with N(50,10) glitches on az at rate 0.01, no detector;
 //       estimator.yaml holds keys of the `estimator:` section; VIGIL_EST_TRACE=1 prints every 30th state's

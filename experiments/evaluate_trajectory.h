@@ -46,7 +46,7 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
 // {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
 // [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
 // ..} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
-// count); the metrics.json of a run directory (README, "Evaluation").
+// count); the metrics.json of a run directory (docs/formats.md, docs/sweeps.md).
 nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 
 // A readable multi-line table of the same numbers (for `vigil eval`).
