@@ -19,6 +19,7 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   for (const auto& o : overrides) config::ApplyOverride(o, config);
   sim::ResolveRelativePaths(std::filesystem::current_path(),
                             &config.sim);  // --set paths: relative to the cwd
+  sim::ResolveDurationToEnd(&config.sim);
   const std::string origin = path.empty() ? "--set" : path;
   try {
     ValidateRunConfig(config, origin);
@@ -76,7 +77,8 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
-  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.detector.dtw.templates_file})
+  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
+                                  config.detector.dtw.templates_file})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }

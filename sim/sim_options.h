@@ -14,11 +14,31 @@
 
 namespace vigil::sim {
 
-enum class TrajectoryType { kEllipse, kRescue, kWaypoints };
+enum class TrajectoryType { kEllipse, kRescue, kWaypoints, kRecording };
+
+// How a recorded trajectory is fitted (sim/recorded_trajectory.h): a cumulative cubic B-spline on
+// SO(3) x R^3 with uniform knots, fitted to the recorded poses by least squares.
+struct RecordedTrajectoryOptions {
+  double knot_spacing_s = 0.0;  // 0: the recording's median pose spacing
+  double smoothing = 0.05;      // weight of the control points' second differences (dimensionless)
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("knot_spacing_s", knot_spacing_s,
+            "knot spacing of the spline fitted to a recording [s] (0: the recording's median pose spacing)",
+            config::Bounds::NonNegative());
+    v.Field("smoothing", smoothing,
+            "weight of the spline's second differences against the pose residuals (0: none; larger: "
+            "smoother, farther from the poses)",
+            config::Bounds::NonNegative());
+  }
+};
 
 struct TrajectoryOptions {
   TrajectoryType type = TrajectoryType::kEllipse;
   std::string waypoints_file;  // for type waypoints: timed poses (see configs/README.md)
+  std::string recording;       // for type recording: a ground-truth file or EuRoC folder
+  RecordedTrajectoryOptions spline;
 
   template <class V>
   void Visit(V& v) {
@@ -26,11 +46,17 @@ struct TrajectoryOptions {
         "type", type,
         config::EnumNames<TrajectoryType>{{"ellipse", TrajectoryType::kEllipse},
                                           {"rescue", TrajectoryType::kRescue},
-                                          {"waypoints", TrajectoryType::kWaypoints}},
+                                          {"waypoints", TrajectoryType::kWaypoints},
+                                          {"recording", TrajectoryType::kRecording}},
         "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
-        "waypoints (C2 spline through timed poses)");
+        "waypoints (C2 spline through timed poses), recording (B-spline fitted to a recorded ground truth)");
     v.Field("waypoints_file", waypoints_file,
             "timed pose CSV for type waypoints (relative to the config file; see configs/README.md)");
+    v.Field("recording", recording,
+            "ground truth for type recording: EuRoC state_groundtruth_estimate0/data.csv (or its mav0 folder "
+            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file; see "
+            "docs/recordings-trajectory.md)");
+    v.Section("spline", spline, "the spline fitted to a recording (type recording)");
   }
 };
 
@@ -142,7 +168,9 @@ struct SimOptions {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("duration_s", duration_s, "simulated duration [s]", config::Bounds::Positive());
+    v.Field("duration_s", duration_s,
+            "simulated duration [s]; 0: to the end of the trajectory (types waypoints and recording)",
+            config::Bounds::NonNegative());
     v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity g_W = (0, 0, -g) [m/s^2]",
             config::Bounds::Positive());
     v.Section("trajectory", trajectory, "body motion");
@@ -156,10 +184,15 @@ struct SimOptions {
   }
 };
 
-// Makes a relative trajectory.waypoints_file absolute, relative to `base_dir` (the config file's directory
-// for paths read from a file, the working directory for --set values), so a written config.yaml works from
-// anywhere. Empty and absolute paths are left alone.
+// Makes a relative trajectory.waypoints_file or trajectory.recording absolute, relative to `base_dir` (the
+// config file's directory for paths read from a file, the working directory for --set values), so a written
+// config.yaml works from anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
+
+// duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the
+// recording (reading only their timestamps). Other values, and trajectories without an end, are left alone
+// (ValidateSimOptions then refuses 0). Throws InputError "trajectory.<key>: file:line: reason".
+void ResolveDurationToEnd(SimOptions* options);
 
 // Longest recording the simulator accepts (it is held in memory): 1e7 IMU samples, 14 h at 200 Hz.
 inline constexpr double kMaxImuSamples = 1e7;
