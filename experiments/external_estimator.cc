@@ -21,7 +21,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double SecondsSince(Clock::time_point start) {
+double ExternalSecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
@@ -96,7 +96,7 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
     fail(std::string("cannot write the recording: ") + e.what());
     return out;
   }
-  json["wall_time_s"]["write_recording"] = SecondsSince(t);
+  json["wall_time_s"]["write_recording"] = ExternalSecondsSince(t);
   const CommandPlaceholders values{fs::absolute(recording->path()).string(),
                                    fs::absolute(recording->path() / euroc_files::kMav0).string(),
                                    fs::absolute(output_dir).string(),
@@ -134,7 +134,7 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   const int64_t t_last = imu.empty() ? 0 : imu.back().t_ns;
   ExternalTrajectory read = ReadExternalTrajectory(output_dir / options.trajectory, options.format,
                                                    options.time_unit, t_first, t_last);
-  json["wall_time_s"]["read"] = SecondsSince(t);
+  json["wall_time_s"]["read"] = ExternalSecondsSince(t);
   json["rows"] = read.trajectory.size();
   if (!read.failure.empty()) {
     fail(read.failure);
