@@ -49,11 +49,11 @@ struct ExternalEstimatorOptions {
         "argv of the external estimator, run without a shell; placeholders {recording}, {mav0}, {output}, "
         "{config}, {seed}, {vigil}");
     v.Field("trajectory", trajectory, "the trajectory file the command writes, relative to {output}");
-    v.Enum(
-        "format", format,
-        config::EnumNames<TrajectoryFormat>{{"tum", TrajectoryFormat::kTum},
-                                            {"euroc", TrajectoryFormat::kEuroc}},
-        "trajectory format: tum (t x y z qx qy qz qw, spaces) or euroc (t,x,y,z,qw,qx,qy,qz[,...], commas)");
+    v.Enum("format", format,
+           config::EnumNames<TrajectoryFormat>{{"tum", TrajectoryFormat::kTum},
+                                               {"euroc", TrajectoryFormat::kEuroc}},
+           "trajectory format: tum (t x y z qx qy qz qw[ ...], spaces) or euroc (t,x,y,z,qw,qx,qy,qz[,...], "
+           "commas); further columns are ignored");
     v.Enum("time_unit", time_unit,
            config::EnumNames<TimeUnit>{{"s", TimeUnit::kSeconds}, {"ns", TimeUnit::kNanoseconds}},
            "unit of the trajectory's timestamps: s or ns");

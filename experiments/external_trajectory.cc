@@ -128,7 +128,7 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
     line.remove_prefix(lead);
     if (line.empty() || line.front() == '#') continue;
     const std::vector<std::string_view> f = SplitFields(line, format);
-    if (f.size() < min_columns || (format == TrajectoryFormat::kTum && f.size() != min_columns))
+    if (f.size() < min_columns)
       return fail(line_number, std::to_string(f.size()) + " columns, expected the " + layout + " layout");
     StampedPose pose;
     const bool time_ok =

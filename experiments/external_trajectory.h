@@ -2,7 +2,8 @@
 // and every problem becomes a reason the run failed, never a crash.
 //
 // Formats (experiments/external_estimator_options.h):
-//   tum    "t x y z qx qy qz qw" separated by spaces or tabs ('#' comment lines allowed)
+//   tum    "t x y z qx qy qz qw[ more columns]" separated by spaces or tabs ('#' comment lines allowed;
+//          OpenVINS appends covariance columns)
 //   euroc  "t,x,y,z,qw,qx,qy,qz[,more columns]" separated by commas (a '#' header line allowed)
 // Times in seconds (decimal, read exactly to the nanosecond) or integer nanoseconds. Positions in metres,
 // the body (IMU) pose in the world frame.

@@ -56,5 +56,21 @@ TEST(ExternalIdentity, VigilEstimateAsAnExternalCommandEqualsTheBuiltInMethod) {
     EXPECT_NE(table.find(row), std::string::npos) << row;
 }
 
+TEST(ExternalIdentity, EstimateRefusesBadInputAndWritesNothing) {
+  TempDir tmp;
+  const fs::path out = tmp.path() / "out";
+  testing::CliResult r = Vigil(tmp, "estimate " + (tmp.path() / "absent").string() + " -o " + out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("vigil: error: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not a dataset directory"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  fs::create_directories(tmp.path() / "rec");
+  r = Vigil(tmp, "estimate " + (tmp.path() / "rec").string() + " -o " + out.string() +
+                     " --set estimator.solver.max_iterations=0");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("estimator.solver.max_iterations"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace vigil

@@ -31,6 +31,23 @@ TEST(ExternalTrajectory, ReadsTumSecondsExactlyToTheNanosecond) {
   EXPECT_EQ(t.trajectory[2].q_WB.w(), 1.0);  // normalized
 }
 
+TEST(ExternalTrajectory, IgnoresFurtherTumColumns) {
+  TempDir tmp;
+  const ExternalTrajectory t =
+      Read(tmp, "# timestamp(s) tx ty tz qx qy qz qw Pr11 Pr12\n1.5 1 2 3 0 0 0 1 0.01 0\n");
+  ASSERT_EQ(t.failure, "");
+  ASSERT_EQ(t.trajectory.size(), 1u);
+  EXPECT_EQ(t.trajectory[0].p_W.z(), 3.0);
+}
+
+TEST(ExternalTrajectory, ReadsNanosecondsWrittenAsFixedPointNumbers) {
+  TempDir tmp;
+  const ExternalTrajectory t =
+      Read(tmp, "1500000000.000000 1 2 3 0 0 0 1\n", TrajectoryFormat::kTum, TimeUnit::kNanoseconds);
+  ASSERT_EQ(t.failure, "");
+  EXPECT_EQ(t.trajectory[0].t_ns, 1500000000);
+}
+
 TEST(ExternalTrajectory, ReadsEurocNanosecondsWithExtraColumns) {
   TempDir tmp;
   const ExternalTrajectory t = Read(tmp, "#timestamp,x,y,z,qw,qx,qy,qz,vx\n2000000000,1,2,3,1,0,0,0,9\n",
