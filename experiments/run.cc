@@ -138,8 +138,9 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   if (config.estimator.backend == EstimatorBackend::kExternal)
     external = RunExternalEstimator(config, data.dataset, detection.result.cleaned, data.images, dir);
   const estimator::EstimatorResult result =
-      external ? std::move(external->result)
-               : Estimate(config, data.dataset, std::move(detection.result.cleaned), detection.result.flagged);
+      external
+          ? std::move(external->result)
+          : Estimate(config, data.dataset, std::move(detection.result.cleaned), detection.result.flagged);
   summary.wall.estimate_s = SecondsSince(t);
 
   t = Clock::now();

@@ -30,7 +30,7 @@ struct RunOptions {
 nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
                           const std::filesystem::path& dir);
 
-// vigil's own estimator on `dataset` with `imu` as its IMU (the run's estimator stage, also `vigil estimate`).
+// vigil's own estimator on `dataset` with `imu` as its IMU: the run's estimator stage, and `vigil estimate`.
 // An exception inside the estimator gives ok = false with its reason; InputError passes through.
 estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu,
                                     std::vector<uint8_t> flagged);
