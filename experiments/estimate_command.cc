@@ -4,10 +4,12 @@
 #include <system_error>
 #include <utility>
 
+#include "core/csv.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/euroc.h"
 #include "core/output.h"
+#include "experiments/external_recording.h"
 #include "experiments/frontend_run.h"
 #include "experiments/metrics_access.h"
 #include "experiments/run.h"
@@ -37,6 +39,35 @@ Recording ReadWithTracks(const RunConfig& config, const fs::path& dataset, bool*
   return recording;
 }
 
+// The detector's flags of a recording vigil wrote (detections.csv beside mav0/, one row per IMU sample at
+// the same timestamps); empty when there is no such file.
+std::vector<uint8_t> ReadRecordingFlags(const fs::path& dataset, const ImuStream& imu) {
+  const fs::path mav0 = FindMav0(dataset);
+  const fs::path root =
+      !mav0.empty() && fs::absolute(mav0).lexically_normal() == fs::absolute(dataset).lexically_normal() &&
+              fs::absolute(dataset).lexically_normal().filename() == euroc_files::kMav0
+          ? fs::absolute(dataset).lexically_normal().parent_path()
+          : dataset;
+  const fs::path path = root / kRecordingDetections;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return {};
+  CsvReader r(path.string(), 2, "detections: timestamp [ns], flagged (0/1)");
+  std::vector<uint8_t> flagged;
+  flagged.reserve(imu.size());
+  while (r.Next()) {
+    if (flagged.size() >= imu.size() || r.Int(0) != imu[flagged.size()].t_ns)
+      r.Fail("timestamp " + std::string(r.Text(0)) + " is not that of IMU sample " +
+             std::to_string(flagged.size() + 1) + " (one row per sample of mav0/imu0/data.csv)");
+    const int64_t flag = r.Int(1);
+    if (flag != 0 && flag != 1) r.Fail("flagged: expected 0 or 1");
+    flagged.push_back(static_cast<uint8_t>(flag));
+  }
+  if (flagged.size() != imu.size())
+    throw InputError(path.string() + ": " + std::to_string(flagged.size()) + " rows for " +
+                     std::to_string(imu.size()) + " IMU samples");
+  return flagged;
+}
+
 }  // namespace
 
 nlohmann::json EstimateToDirectory(const fs::path& dataset, const std::string& config_path,
@@ -62,8 +93,10 @@ nlohmann::json EstimateToDirectory(const fs::path& dataset, const std::string& c
     noise.accel_bias_random_walk = recording.imu_sensor.accelerometer_random_walk;
   }
   const Clock::time_point estimate_start = Clock::now();
+  std::vector<uint8_t> flagged = ReadRecordingFlags(dataset, recording.dataset.imu);
   ImuStream imu = recording.dataset.imu;
-  const estimator::EstimatorResult result = Estimate(config, recording.dataset, std::move(imu), {});
+  const estimator::EstimatorResult result =
+      Estimate(config, recording.dataset, std::move(imu), std::move(flagged));
   const double estimate_s = std::chrono::duration<double>(Clock::now() - estimate_start).count();
 
   nlohmann::json status;

@@ -6,6 +6,7 @@
 // feature tracks (features.csv beside mav0/; tracked from the cam0 images by the front-end when there is
 // none), camera and ground truth, with the configuration's estimator options, gravity and seed. The IMU noise
 // densities are those of imu0/sensor.yaml when the recording has one, else the configuration's imu.noise.
+// A detections.csv beside mav0/ (what a run's detector flagged) feeds estimator.mitigation.inflate.
 // The estimator backend keys (estimator.backend, estimator.external) are ignored: it is vigil's estimator.
 #pragma once
 

@@ -70,6 +70,7 @@ const char* OutcomeName(ChildProcessResult::Outcome outcome) {
 }  // namespace
 
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
+                                      const std::vector<uint8_t>& flagged,
                                       const std::vector<CameraImage>& images, const fs::path& run_dir) {
   const ExternalEstimatorOptions& options = config.estimator.external;
   ExternalEstimate out;
@@ -91,7 +92,7 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   try {
     fs::create_directories(output_dir);
     recording = std::make_unique<RecordingDir>(run_dir, options.keep_recording);
-    WriteExternalRecording(recording->path(), config, dataset, imu, images);
+    WriteExternalRecording(recording->path(), config, dataset, imu, flagged, images);
   } catch (const std::exception& e) {
     fail(std::string("cannot write the recording: ") + e.what());
     return out;

@@ -31,8 +31,10 @@ struct ExternalEstimate {
 };
 
 // Runs config.estimator.external on `dataset` with `imu` (after detection and mitigation) as its IMU and
-// `images` (may be empty) as its camera images; `run_dir` receives the files listed above.
+// `flagged` its detector's flags (may be empty), `images` (may be empty) as its camera images; `run_dir`
+// receives the files listed above.
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
+                                      const std::vector<uint8_t>& flagged,
                                       const std::vector<CameraImage>& images,
                                       const std::filesystem::path& run_dir);
 

@@ -5,12 +5,14 @@
 
 #include "core/error.h"
 #include "core/output.h"
+#include "detectors/detector.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
 
 void WriteExternalRecording(const fs::path& dir, const RunConfig& config, const Dataset& dataset,
-                            const ImuStream& imu, const std::vector<CameraImage>& images) {
+                            const ImuStream& imu, const std::vector<uint8_t>& flagged,
+                            const std::vector<CameraImage>& images) {
   Dataset seen;
   seen.imu = imu;
   seen.camera = dataset.camera;
@@ -39,6 +41,9 @@ void WriteExternalRecording(const fs::path& dir, const RunConfig& config, const 
                                image.path + ": " + ec.message());
   }
   WriteFileAtomic(dir / dataset_files::kFeatures, FeaturesCsv(dataset.frames));
+  if (!flagged.empty() && flagged.size() == imu.size() &&
+      config.detector.type != detectors::DetectorType::kNone)
+    WriteFileAtomic(dir / kRecordingDetections, detectors::DetectionsCsv(imu, flagged));
   RunConfig resolved = config;  // ToYaml visits (non-const)
   WriteFileAtomic(dir / dataset_files::kConfig, config::ToYaml(resolved));
 }

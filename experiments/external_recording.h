@@ -7,6 +7,8 @@
 //                                            (a simulated run without rendered images lists the frames only)
 //   DIR/mav0/state_groundtruth_estimate0/    the ground truth, when known
 //   DIR/features.csv                         vigil's feature tracks (formats.md)
+//   DIR/detections.csv                       the detector's flag per IMU sample, when a detector ran
+//                                            (`#timestamp [ns],flagged`; read by in-estimator mitigation)
 //   DIR/config.yaml                          the run's resolved configuration
 //
 // `vigil estimate DIR` reads it back and gives vigil's estimator the same input as inside `vigil run`.
@@ -22,8 +24,13 @@
 namespace vigil::experiments {
 
 // Writes the recording into `dir` (which must exist): `dataset`'s camera, frames and ground truth with `imu`
-// as the IMU, linking `images` (empty: none).
+// as the IMU and `flagged` (one per sample of `imu`, else none) as its detections, linking `images` (empty:
+// none).
 void WriteExternalRecording(const std::filesystem::path& dir, const RunConfig& config, const Dataset& dataset,
-                            const ImuStream& imu, const std::vector<CameraImage>& images);
+                            const ImuStream& imu, const std::vector<uint8_t>& flagged,
+                            const std::vector<CameraImage>& images);
+
+// The detections.csv of a recording, beside its mav0/.
+inline constexpr const char* kRecordingDetections = "detections.csv";
 
 }  // namespace vigil::experiments

@@ -136,7 +136,8 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   t = Clock::now();
   std::optional<ExternalEstimate> external;
   if (config.estimator.backend == EstimatorBackend::kExternal)
-    external = RunExternalEstimator(config, data.dataset, detection.result.cleaned, data.images, dir);
+    external = RunExternalEstimator(config, data.dataset, detection.result.cleaned, detection.result.flagged,
+                                    data.images, dir);
   const estimator::EstimatorResult result =
       external
           ? std::move(external->result)

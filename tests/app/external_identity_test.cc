@@ -29,12 +29,16 @@ TEST(ExternalIdentity, VigilEstimateAsAnExternalCommandEqualsTheBuiltInMethod) {
                    "      command: [\"{vigil}\", estimate, \"{recording}\", -o, \"{output}\", --config, "
                    "\"{config}\"]\n"
                    "  ext_original: {type: none, estimator.backend: external, estimator.external: *e}\n"
+                   // In-estimator mitigation reads the detector's flags: the recording carries them.
+                   "  builtin_inflate: {type: threshold, estimator.mitigation.inflate.enabled: true}\n"
+                   "  ext_inflate: {type: threshold, estimator.mitigation.inflate.enabled: true,\n"
+                   "                estimator.backend: external, estimator.external: *e}\n"
                    "seeds: [1]\nwrite_figure_data: false\n"
                    "table_methods: [builtin_trunc, ext_trunc, builtin_original, ext_original]\n");
   const fs::path out = tmp.path() / "sweep";
   const testing::CliResult r = Vigil(tmp, "sweep " + sweep + " -o " + out.string() + " -j 1 --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* method : {"trunc", "original"}) {
+  for (const char* method : {"trunc", "original", "inflate"}) {
     const fs::path builtin = out / "runs" / ("noise_50_10-builtin_" + std::string(method) + "-s001");
     const fs::path external = out / "runs" / ("noise_50_10-ext_" + std::string(method) + "-s001");
     const std::string a = ReadFile(builtin / "stamped_traj_estimate.txt");
