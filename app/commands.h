@@ -36,6 +36,7 @@ void AddTrackCommand(CLI::App& root);
 void AddPlotCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);
 void AddRunCommand(CLI::App& root);
+void AddEstimateCommand(CLI::App& root);
 void AddSweepCommand(CLI::App& root);
 void AddTablesCommand(CLI::App& root);
 void AddPaperCommand(CLI::App& root);

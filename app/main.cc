@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   AddCleanCommand(root);
   AddTrackCommand(root);
   AddRunCommand(root);
+  AddEstimateCommand(root);
   AddEvalCommand(root);
   AddPlotCommand(root);
   AddSweepCommand(root);

@@ -254,7 +254,7 @@ fs::path EurocImageDir(const fs::path& dir) {
   return dir / euroc_files::kMav0 / euroc_files::kCamera / euroc_files::kImages;
 }
 
-Recording ReadRecording(const fs::path& dir) {
+Recording ReadRecording(const fs::path& dir, bool check_image_files) {
   using namespace euroc_files;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(dir.string() + ": not a dataset directory");
@@ -264,7 +264,8 @@ Recording ReadRecording(const fs::path& dir) {
     rec.dataset = ReadDataset(dir);
     rec.has_camera = rec.has_features = rec.has_groundtruth = true;
     const fs::path list = dir / kMav0 / kCamera / kData;
-    if (IsFile(list)) rec.images = ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages);
+    if (IsFile(list))
+      rec.images = ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages, check_image_files);
     return rec;
   }
   const fs::path mav0 = FindMav0(dir);
@@ -284,7 +285,7 @@ Recording ReadRecording(const fs::path& dir) {
     const Eigen::Isometry3d T_IC = rec.imu_sensor.T_BS.inverse() * d.camera.T_BC_iso();
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) d.camera.T_BC[4 * r + c] = T_IC.matrix()(r, c);
-    rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages);
+    rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages, check_image_files);
     rec.has_camera = true;
   }
   const fs::path gt = mav0 / kGroundTruth / kData;

@@ -101,7 +101,9 @@ struct Recording {
 //   (optional), ground truth from state_groundtruth_estimate0/ (optional), feature tracks from a features.csv
 //   beside mav0/ (optional; `vigil track` writes one), at the image timestamps.
 // Errors name the file and line; a folder that is neither layout is "DIR: not a dataset directory (...)".
-Recording ReadRecording(const std::filesystem::path& dir);
+// With `check_image_files` false, cam0/data.csv may list images that are absent (a recording of feature
+// tracks only, whose frame times the list gives); whoever loads an image then finds it missing.
+Recording ReadRecording(const std::filesystem::path& dir, bool check_image_files = true);
 
 // Writes mav0/ into `dir` (which must exist): imu0 (data.csv, sensor.yaml), cam0 (data.csv listing
 // `image_times_ns`, sensor.yaml; the images themselves are written by the caller into ImageDir(dir)) and the

@@ -13,6 +13,7 @@
 #include "estimator/run_estimator.h"
 #include "experiments/detection_stage.h"
 #include "experiments/evaluate_trajectory.h"
+#include "experiments/external_estimator.h"
 #include "experiments/frontend_run.h"
 #include "experiments/imu_axis_record.h"
 #include "experiments/run_inputs.h"
@@ -36,6 +37,7 @@ struct RunData {
   bool with_groundtruth = true;  // dataset.groundtruth is known (else the run is not evaluated)
   double duration_s = 0.0;
   std::optional<FrontendRunResult> frontend;  // when the tracker made the feature tracks
+  std::vector<CameraImage> images;            // the recording's camera images (none when simulated)
 };
 
 RunData LoadData(const RunConfig& config, const RunOptions& options) {
@@ -66,6 +68,7 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
     throw InputError(options.dataset_dir.string() +
                      ": no features.csv and no camera images (mav0/cam0/data.csv) to track");
   data.dataset = std::move(recording.dataset);
+  data.images = std::move(recording.images);
   data.with_groundtruth = recording.has_groundtruth;
   data.with_glitches = fs::exists(options.dataset_dir / dataset_files::kGlitches, ec);
   data.with_clean = !data.dataset.imu_clean.empty();
@@ -73,6 +76,8 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
   data.duration_s = imu.size() > 1 ? NsToS(imu.back().t_ns - imu.front().t_ns) : 0.0;
   return data;
 }
+
+}  // namespace
 
 estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu,
                                     std::vector<uint8_t> flagged) {
@@ -88,6 +93,8 @@ estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& data
     return failed;
   }
 }
+
+namespace {
 
 // The glitched axis (the first of glitch.axes, a_z when none) as measured, clean and mitigated.
 ImuAxisRecord ImuAxisRecordOf(const RunConfig& config, const RunData& data,
@@ -109,6 +116,8 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
 
   Clock::time_point t = Clock::now();
   const RunData data = LoadData(config, options);
+  if (const std::string why = ExternalInputProblem(config, !data.images.empty(), true); !why.empty())
+    throw InputError(options.dataset_dir.string() + ": " + why);
   summary.duration_s = data.duration_s;
   summary.wall.simulate_s = SecondsSince(t) - (data.frontend ? data.frontend->track_s : 0.0);
 
@@ -125,8 +134,14 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
       options.write_figure_data ? ImuAxisCsv(ImuAxisRecordOf(config, data, detection.result)) : std::string();
 
   t = Clock::now();
+  std::optional<ExternalEstimate> external;
+  if (config.estimator.backend == EstimatorBackend::kExternal)
+    external = RunExternalEstimator(config, data.dataset, detection.result.cleaned, detection.result.flagged,
+                                    data.images, dir);
   const estimator::EstimatorResult result =
-      Estimate(config, data.dataset, std::move(detection.result.cleaned), detection.result.flagged);
+      external
+          ? std::move(external->result)
+          : Estimate(config, data.dataset, std::move(detection.result.cleaned), detection.result.flagged);
   summary.wall.estimate_s = SecondsSince(t);
 
   t = Clock::now();
@@ -152,6 +167,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
   if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
+  if (external) metrics["external"] = external->json;
   if (data.frontend) {
     metrics["frontend"] = data.frontend->metrics;
     metrics["wall_time_s"]["track"] = data.frontend->track_s;  // rendering (simulated runs) and tracking

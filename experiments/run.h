@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/dataset.h"
 #include "detectors/template_library.h"
+#include "estimator/estimator_input.h"
 #include "experiments/run_config.h"
 
 namespace vigil::experiments {
@@ -27,5 +29,10 @@ struct RunOptions {
 // bad input throws InputError.
 nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
                           const std::filesystem::path& dir);
+
+// vigil's own estimator on `dataset` with `imu` as its IMU: the run's estimator stage, and `vigil estimate`.
+// An exception inside the estimator gives ok = false with its reason; InputError passes through.
+estimator::EstimatorResult Estimate(const RunConfig& config, const Dataset& dataset, ImuStream imu,
+                                    std::vector<uint8_t> flagged);
 
 }  // namespace vigil::experiments

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "detectors/detector.h"
 #include "sim/imu_presets.h"
+#include "experiments/external_command.h"
 
 namespace vigil::experiments {
 
@@ -65,6 +66,9 @@ void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   } catch (const InputError& e) {
     throw InputError(origin + ": " + e.what());
   }
+  if (config.estimator.backend == EstimatorBackend::kExternal)
+    if (const std::string why = ValidateExternalOptions(config.estimator.external); !why.empty())
+      throw InputError(origin + ": estimator.external." + why);
 }
 
 std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,

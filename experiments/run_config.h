@@ -12,6 +12,7 @@
 #include "detectors/detector_options.h"
 #include "estimator/estimator_options.h"
 #include "experiments/evaluation_options.h"
+#include "experiments/external_estimator_options.h"
 #include "frontend/frontend_options.h"
 #include "sim/sim_options.h"
 
@@ -22,7 +23,7 @@ struct RunConfig {
   sim::SimOptions sim;
   frontend::FrontendOptions frontend;
   detectors::DetectorOptions detector;
-  estimator::EstimatorOptions estimator;
+  RunEstimatorOptions estimator;  // vigil's estimator's options, and which estimator runs
   EvaluationOptions evaluation;
 
   template <class V>

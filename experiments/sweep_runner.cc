@@ -10,6 +10,7 @@
 #include "core/staging.h"
 #include "core/thread_handoff.h"
 #include "experiments/detection_stage.h"
+#include "experiments/external_estimator.h"
 #include "experiments/results_csv.h"
 #include "experiments/tables.h"
 
@@ -70,7 +71,12 @@ SweepPlan ResolveSweepPlan(const SweepSpec& spec) {
   SweepPlan plan;
   plan.cells = EnumerateCells(spec);
   plan.configs.reserve(plan.cells.size());
-  for (const SweepCell& cell : plan.cells) plan.configs.push_back(ResolveCellConfig(spec, cell));
+  for (const SweepCell& cell : plan.cells) {
+    plan.configs.push_back(ResolveCellConfig(spec, cell));
+    // A sweep's runs are simulated: feature tracks, no camera images on disk.
+    if (const std::string why = ExternalInputProblem(plan.configs.back(), false, true); !why.empty())
+      ThrowCellError(spec, cell, why);
+  }
   plan.runs = EnumerateRuns(spec, plan.cells);
   return plan;
 }
