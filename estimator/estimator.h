@@ -65,6 +65,9 @@ class Estimator {
   bool initialized() const { return initialized_; }
   const std::string& failure_reason() const { return failure_reason_; }
   int resets() const { return resets_; }
+  // How often each failure check fired (reset or stop), by name: "accel_bias", "gyro_bias", "speed",
+  // "position_jump", "z_jump", "rotation_jump", "lost_tracks", "non_finite", "solver".
+  const std::map<std::string, int>& failure_checks() const { return failure_checks_; }
   int keyframes() const { return keyframes_; }
   // Marginalizations that failed (nothing left to keep, or non-finite numbers): the prior was dropped.
   int marginalization_failures() const { return marginalization_failures_; }
@@ -103,7 +106,14 @@ class Estimator {
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
   ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
-  std::string DetectFailure(const Eigen::Vector3d& previous_p_W) const;
+  // A failure check that fired: its name (failure_checks()) and what it saw; `check` empty when none did.
+  struct Failure {
+    std::string check;
+    std::string reason;
+  };
+  // The checks of FailureOptions on the window after a solve; `previous` is the frame before the newest as it
+  // was before the solve.
+  Failure DetectFailure(const NavState& previous) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
   void MarginalizeOldest(bool with_prior);
@@ -150,6 +160,8 @@ class Estimator {
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;
   int resets_ = 0;
+  int lost_frames_ = 0;  // consecutive frames with fewer than options_.failure.min_tracked_features tracks
+  std::map<std::string, int> failure_checks_;
   int keyframes_ = 0;
   int marginalization_failures_ = 0;
   EstimatorTiming timing_;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,8 @@ struct EstimatorResult {
   Trajectory trajectory;
   double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // time of the first successful init
   int resets = 0;                    // failure-detection resets (each followed by re-initialization)
+  int stops = 0;                     // failure-detection stops (1 when a failure ended the run, else 0)
+  std::map<std::string, int> failure_checks;  // resets + stops by the check that fired (Estimator)
   int frames = 0;                    // camera frames processed
   int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
   int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time

@@ -78,6 +78,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       const FrameStatus status = estimator.AddFrame(frame.t_ns, features_n, imu, &trust.variance_scale);
       if (status == FrameStatus::kFailed) {
         result.ok = false;
+        result.stops = 1;
         result.failure_reason = estimator.failure_reason();
         break;
       }
@@ -97,6 +98,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   }
   if (estimator.initialized_at_ns()) result.initialized_at_s = NsToS(*estimator.initialized_at_ns());
   result.resets = estimator.resets();
+  result.failure_checks = estimator.failure_checks();
   result.keyframes = estimator.keyframes();
   result.marginalization_failures = estimator.marginalization_failures();
   result.timing = estimator.timing();

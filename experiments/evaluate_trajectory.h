@@ -35,6 +35,10 @@ struct TrajectoryEvaluation {
   // coverage = 1 and this one is shorter when the estimate starts late (initialization) or stops early.
   double gt_length_m = 0.0;
   ErrorStatistics ate_trans_m, ate_rot_deg;
+  // options.divergence applied: the largest ATE RMSE that is not divergence, and whether the run exceeds it
+  // (false when nothing matched: such a run is failed, not diverged).
+  double divergence_bound_m = 0.0;
+  bool diverged = false;
   std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
 };
 
@@ -45,7 +49,7 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
 
 // {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
 // [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
-// ..} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
+// .., "divergence": {"bound_m", "diverged"}} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
 // count); the metrics.json of a run directory (README, "Evaluation").
 nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/format.h"
 #include "experiments/metrics_access.h"
 
 namespace vigil::experiments {
@@ -15,16 +16,26 @@ double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * second
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const TrajectoryEvaluation& evaluation, const nlohmann::json& detection) {
   nlohmann::json m;
-  // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success.
+  // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success; one
+  // whose error leaves the divergence bound (evaluation_options.h) is diverged.
   const bool evaluated =
       std::isfinite(evaluation.ate_trans_m.rmse) && std::isfinite(evaluation.ate_rot_deg.rmse);
-  const bool ok = result.ok && evaluated;
-  m["status"] = ok ? "ok" : "failed";
-  m["failure_reason"] = ok           ? ""
-                        : !result.ok ? result.failure_reason
-                                     : "evaluation: the ATE is not finite (" +
-                                           std::to_string(evaluation.matched_poses) +
-                                           " matched poses); check the ground truth and the estimate";
+  if (!result.ok) {
+    m["status"] = "failed";
+    m["failure_reason"] = result.failure_reason;
+  } else if (!evaluated) {
+    m["status"] = "failed";
+    m["failure_reason"] = "evaluation: the ATE is not finite (" + std::to_string(evaluation.matched_poses) +
+                          " matched poses); check the ground truth and the estimate";
+  } else if (evaluation.diverged) {
+    m["status"] = "diverged";
+    m["failure_reason"] = "ATE RMSE " + FormatFixed(evaluation.ate_trans_m.rmse, 3) + " m exceeds " +
+                          FormatFixed(evaluation.divergence_bound_m, 3) + " m (divergence bound over " +
+                          FormatFixed(evaluation.gt_length_m, 1) + " m travelled)";
+  } else {
+    m["status"] = "ok";
+    m["failure_reason"] = "";
+  }
   m["seed"] = summary.seed;
   m["duration_s"] = summary.duration_s;
   const RunWallTimes& w = summary.wall;
@@ -34,6 +45,8 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   m["estimator"] = {{"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
                     {"initialized_at_s", NumberOrNull(result.initialized_at_s)},
                     {"resets", result.resets},
+                    {"stops", result.stops},
+                    {"failure_checks", result.failure_checks},
                     {"frames", result.frames},
                     {"keyframes", result.keyframes},
                     {"marginalization_failures", result.marginalization_failures},
@@ -72,8 +85,8 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   if (!reason.empty()) s += " (" + reason + ")";
   char buf[256];
   if (m.value("evaluation", std::string()) == kEvaluationSkipped) {
-    std::snprintf(buf, sizeof(buf), ": %s; %lld poses estimated",
-                  kEvaluationSkipped, static_cast<long long>(m["estimator"].value("output_poses", 0)));
+    std::snprintf(buf, sizeof(buf), ": %s; %lld poses estimated", kEvaluationSkipped,
+                  static_cast<long long>(m["estimator"].value("output_poses", 0)));
     return s + buf;
   }
   const nlohmann::json& ate = m.at("ate");
