@@ -164,6 +164,13 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     failure_reason_ = "at t = " + FormatFixed(NsToS(t_ns), 3) + " s: " + reason;
     return FrameStatus::kFailed;
   }
+  newest_pose_covariance_.reset();
+  if (options_.pose_covariance) {
+    const auto covariance_start = std::chrono::steady_clock::now();
+    newest_pose_covariance_ = NewestPoseCovariance();
+    if (newest_pose_covariance_) window_.back()->P_pose = *newest_pose_covariance_;
+    timing_.covariance_s += SecondsSince(covariance_start);
+  }
   if (full) {
     const auto marg_start = std::chrono::steady_clock::now();
     Slide(keyframe, /*with_prior=*/true);

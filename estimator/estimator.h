@@ -34,6 +34,7 @@
 #include "estimator/imu_gating.h"
 #include "estimator/initializer.h"
 #include "estimator/marginalization.h"
+#include "estimator/pose_covariance.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/preintegration.h"
 #include "estimator/reprojection_factor.h"
@@ -62,6 +63,9 @@ class Estimator {
                        const std::vector<double>* imu_variance_scale = nullptr);
 
   NavState newest_state() const;
+  // The newest state's pose covariance (pose_covariance.h) after the frame AddFrame returned kTracking for;
+  // empty when options.pose_covariance is off or it could not be computed.
+  const std::optional<Matrix6d>& newest_pose_covariance() const { return newest_pose_covariance_; }
   bool initialized() const { return initialized_; }
   const std::string& failure_reason() const { return failure_reason_; }
   int resets() const { return resets_; }
@@ -83,6 +87,8 @@ class Estimator {
     double speed_bias[kSpeedBiasSize] = {};
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
+    // The pose covariance estimated when this frame was the newest (zero before: the initial window).
+    Matrix6d P_pose = Matrix6d::Zero();
 
     NavState State() const;
     void SetState(const NavState& s);
@@ -122,6 +128,8 @@ class Estimator {
   // fails.
   void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
   void Reset();
+  // The newest pose's covariance from the window's information (estimator_covariance.cc).
+  std::optional<Matrix6d> NewestPoseCovariance();
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it), from
   // reprojection_factors_.
@@ -166,6 +174,7 @@ class Estimator {
   int marginalization_failures_ = 0;
   EstimatorTiming timing_;
   GatingStats gating_;
+  std::optional<Matrix6d> newest_pose_covariance_;
 };
 
 }  // namespace vigil::estimator

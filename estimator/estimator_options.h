@@ -236,6 +236,7 @@ struct EstimatorOptions {
   FailureOptions failure;
   ImuNoiseModelOptions imu_noise;
   MitigationOptions mitigation;
+  bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
 
   template <class V>
   void Visit(V& v) {
@@ -254,6 +255,9 @@ struct EstimatorOptions {
     v.Section("imu_noise", imu_noise,
               "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
     v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
+    v.Field("pose_covariance", pose_covariance,
+            "compute each output pose's covariance (the marginal of the newest frame of the window, with the "
+            "gauge chained from the oldest frame) for the NEES");
   }
 };
 

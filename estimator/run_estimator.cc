@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -86,6 +87,9 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       const NavState state = estimator.newest_state();
       result.states.push_back(state);
       result.trajectory.push_back(StampedPose{state.t_ns, state.p_W, state.q_WB});
+      if (options.pose_covariance)
+        result.pose_covariances.push_back(estimator.newest_pose_covariance().value_or(
+            Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN())));
     }
   } catch (const std::exception& e) {
     // Numerical trouble must not escape as a crash: the run fails with the reason.

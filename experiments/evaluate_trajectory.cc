@@ -85,6 +85,8 @@ nlohmann::json EvaluationJson(const TrajectoryEvaluation& ev) {
   json["coverage"] = ev.coverage;
   json["gt_length_m"] = ev.gt_length_m;
   json["divergence"] = {{"bound_m", ev.divergence_bound_m}, {"diverged", ev.diverged}};
+  json["nees"] = {{"position", StatisticsJson(ev.nees.position)},
+                  {"orientation", StatisticsJson(ev.nees.orientation)}};
   return json;
 }
 

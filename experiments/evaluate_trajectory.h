@@ -16,6 +16,7 @@
 #include "experiments/alignment.h"
 #include "experiments/association.h"
 #include "experiments/evaluation_options.h"
+#include "experiments/nees.h"
 #include "experiments/statistics.h"
 
 namespace vigil::experiments {
@@ -40,6 +41,8 @@ struct TrajectoryEvaluation {
   double divergence_bound_m = 0.0;
   bool diverged = false;
   std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
+  // Position and orientation NEES (nees.h); set by the caller that has the pose covariances (n = 0 without).
+  NeesStatistics nees;
 };
 
 // Never throws for a poor or empty estimate: with no matched pose every statistic has n = 0.
@@ -49,7 +52,7 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
 
 // {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
 // [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
-// .., "divergence": {"bound_m", "diverged"}} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
+// .., "divergence": {"bound_m", "diverged"}, "nees": {"position": STATS, "orientation": STATS}} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
 // count); the metrics.json of a run directory (README, "Evaluation").
 nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 

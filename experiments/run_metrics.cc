@@ -55,10 +55,12 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                      {{"optimize_s", t.optimize_s},
                       {"marginalize_s", t.marginalize_s},
                       {"initialize_s", t.initialize_s},
+                      {"covariance_s", t.covariance_s},
                       {"optimizations", t.optimizations},
                       {"marginalizations", t.marginalizations},
                       {"optimize_ms_per_frame", PerFrameMs(t.optimize_s, result.frames)},
                       {"marginalize_ms_per_frame", PerFrameMs(t.marginalize_s, result.frames)},
+                      {"covariance_ms_per_frame", PerFrameMs(t.covariance_s, result.frames)},
                       {"estimate_ms_per_frame", PerFrameMs(w.estimate_s, result.frames)}}}};
   const estimator::MitigationStats& mit = result.mitigation;
   m["estimator"]["mitigation"] = {{"repeated_timestamps", mit.repeated_timestamps},
@@ -98,6 +100,12 @@ std::string RunSummaryLine(const nlohmann::json& m) {
     const nlohmann::json& r = m.at("relative").front();
     std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", MetricNumber(r, {"distance_m"}),
                   MetricNumber(r, {"trans_m", "mean"}), MetricNumber(r, {"yaw_deg", "mean"}));
+    s += buf;
+  }
+  const double nees_p = MetricNumber(m, {"nees", "position", "mean"});
+  if (std::isfinite(nees_p)) {
+    std::snprintf(buf, sizeof(buf), ", NEES %.2f pos / %.2f rot (3 = consistent)", nees_p,
+                  MetricNumber(m, {"nees", "orientation", "mean"}));
     s += buf;
   }
   // A dropped marginalization prior (the window then holds only its own information) is said.
