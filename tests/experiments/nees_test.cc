@@ -17,7 +17,7 @@ namespace {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 // A fixed, correlated covariance: 2-5 cm in position, 0.2-0.6 deg in orientation.
-Matrix6d KnownCovariance() {
+Matrix6d KnownNeesCovariance() {
   Matrix6d L = Matrix6d::Zero();
   L.diagonal() << 0.05, 0.03, 0.02, 0.010, 0.006, 0.004;
   L(1, 0) = 0.02;
@@ -27,18 +27,18 @@ Matrix6d KnownCovariance() {
   return L * L.transpose();
 }
 
-struct Run {
+struct NeesSample {
   Trajectory gt, est;
 };
 
 // A circle of 4000 poses; the estimate is the truth moved by an error drawn from N(0, P) in the tangent
 // [delta p_W, delta theta_B] (est = truth - e_p, R_est = R_gt Exp(-e_theta)).
-Run Draw(const Matrix6d& P, uint64_t seed) {
+NeesSample DrawNeesSample(const Matrix6d& P, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> n01;
   const Eigen::LLT<Matrix6d> llt(P);
   const Matrix6d L = llt.matrixL();
-  Run run;
+  NeesSample run;
   for (int k = 0; k < 4000; ++k) {
     const double a = 0.01 * k;
     StampedPose g{k * 50'000'000LL, Eigen::Vector3d(10 * std::cos(a), 10 * std::sin(a), 1.0),
@@ -56,8 +56,8 @@ Run Draw(const Matrix6d& P, uint64_t seed) {
 }
 
 TEST(Nees, MeanIsThreeForTheTrueCovariance) {
-  const Matrix6d P = KnownCovariance();
-  const Run run = Draw(P, 1);
+  const Matrix6d P = KnownNeesCovariance();
+  const NeesSample run = DrawNeesSample(P, 1);
   const NeesStatistics nees = ComputeNees(run.gt, run.est, std::vector<Matrix6d>(run.est.size(), P), {});
   ASSERT_EQ(nees.position.n, 4000);
   // The mean of 4000 chi-square(3) draws: std sqrt(6 / 4000) = 0.04.
@@ -76,8 +76,8 @@ TEST(Nees, MeanIsThreeForTheTrueCovariance) {
 // The ground truth in another frame (yawed by 40 deg and shifted): brought into the estimate's frame by the
 // inverse of the alignment, the NEES is that of the same errors in one frame.
 TEST(Nees, GroundTruthIsBroughtIntoTheEstimateFrame) {
-  const Matrix6d P = KnownCovariance();
-  const Run run = Draw(P, 2);
+  const Matrix6d P = KnownNeesCovariance();
+  const NeesSample run = DrawNeesSample(P, 2);
   SimilarityTransform est_to_gt;
   est_to_gt.R = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   est_to_gt.t = Eigen::Vector3d(3.0, -2.0, 0.5);
@@ -96,8 +96,8 @@ TEST(Nees, GroundTruthIsBroughtIntoTheEstimateFrame) {
 }
 
 TEST(Nees, PosesWithoutAUsableCovarianceAreSkipped) {
-  const Matrix6d P = KnownCovariance();
-  const Run run = Draw(P, 3);
+  const Matrix6d P = KnownNeesCovariance();
+  const NeesSample run = DrawNeesSample(P, 3);
   std::vector<Matrix6d> covariances(run.est.size(), P);
   covariances[0] = Matrix6d::Constant(std::nan(""));
   covariances[1] = -P;
