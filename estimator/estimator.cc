@@ -118,6 +118,7 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     if (initialized_) Predict(frame.get());
   }
   const int tracked = features_.AddFrame(frame->id, features_n);
+  lost_frames_ = tracked < options_.failure.min_tracked_features ? lost_frames_ + 1 : 0;
   window_.push_back(std::move(frame));
 
   // Is the second newest frame a keyframe? (then the oldest frame leaves the window, else the second newest)
@@ -139,18 +140,22 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     }
   }
 
-  const Eigen::Vector3d previous_p_W = n >= 2 ? window_[n - 2]->State().p_W : window_.back()->State().p_W;
+  const NavState previous = n >= 2 ? window_[n - 2]->State() : window_.back()->State();
   features_.Triangulate(CameraPoses());
-  std::string reason;
+  Failure failure;
   const auto start = std::chrono::steady_clock::now();
-  const bool solved = Optimize(keyframe && full, &reason);
+  const bool solved = Optimize(keyframe && full, &failure.reason);
   timing_.optimize_s += SecondsSince(start);
   ++timing_.optimizations;
   if (solved) {
     features_.RemoveOutliers(CameraPoses(), camera_.fx);
-    reason = DetectFailure(previous_p_W);
+    failure = DetectFailure(previous);
+  } else {
+    failure.check = "solver";
   }
-  if (!reason.empty()) {
+  if (!failure.check.empty()) {
+    ++failure_checks_[failure.check];
+    const std::string& reason = failure.reason;
     if (initializer_->CanReinitialize()) {
       Reset();
       ++resets_;
@@ -158,6 +163,13 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     }
     failure_reason_ = "at t = " + FormatFixed(NsToS(t_ns), 3) + " s: " + reason;
     return FrameStatus::kFailed;
+  }
+  newest_pose_covariance_.reset();
+  if (options_.pose_covariance) {
+    const auto covariance_start = std::chrono::steady_clock::now();
+    newest_pose_covariance_ = NewestPoseCovariance();
+    if (newest_pose_covariance_) window_.back()->P_pose = *newest_pose_covariance_;
+    timing_.covariance_s += SecondsSince(covariance_start);
   }
   if (full) {
     const auto marg_start = std::chrono::steady_clock::now();
@@ -202,21 +214,30 @@ bool Estimator::TryInitialize() {
   return true;
 }
 
-std::string Estimator::DetectFailure(const Eigen::Vector3d& previous_p_W) const {
+Estimator::Failure Estimator::DetectFailure(const NavState& previous) const {
   for (const auto& f : window_) {
     const NavState s = f->State();
-    if (!AllFinite(s)) return "non-finite state";
+    if (!AllFinite(s)) return {"non_finite", "non-finite state"};
   }
   const NavState s = window_.back()->State();
   const FailureOptions& o = options_.failure;
   if (s.b_a.norm() > o.max_accel_bias)
-    return "accelerometer bias norm " + FormatFixed(s.b_a.norm(), 3) + " m/s^2";
-  if (s.b_g.norm() > o.max_gyro_bias) return "gyro bias norm " + FormatFixed(s.b_g.norm(), 3) + " rad/s";
-  if ((s.p_W - previous_p_W).norm() > o.max_position_jump_m)
-    return "position jump " + FormatFixed((s.p_W - previous_p_W).norm(), 3) + " m";
-  if (std::abs(s.p_W.z() - previous_p_W.z()) > o.max_z_jump_m)
-    return "z jump " + FormatFixed(std::abs(s.p_W.z() - previous_p_W.z()), 3) + " m";
-  return "";
+    return {"accel_bias", "accelerometer bias norm " + FormatFixed(s.b_a.norm(), 3) + " m/s^2"};
+  if (s.b_g.norm() > o.max_gyro_bias)
+    return {"gyro_bias", "gyro bias norm " + FormatFixed(s.b_g.norm(), 3) + " rad/s"};
+  if (s.v_W.norm() > o.max_speed_mps) return {"speed", "speed " + FormatFixed(s.v_W.norm(), 3) + " m/s"};
+  const double jump_m = (s.p_W - previous.p_W).norm();
+  if (jump_m > o.max_position_jump_m)
+    return {"position_jump", "position jump " + FormatFixed(jump_m, 3) + " m"};
+  const double z_jump_m = std::abs(s.p_W.z() - previous.p_W.z());
+  if (z_jump_m > o.max_z_jump_m) return {"z_jump", "z jump " + FormatFixed(z_jump_m, 3) + " m"};
+  const double turn_deg = s.q_WB.angularDistance(previous.q_WB) * 180.0 / M_PI;
+  if (turn_deg > o.max_rotation_jump_deg)
+    return {"rotation_jump", "rotation jump " + FormatFixed(turn_deg, 1) + " deg"};
+  if (lost_frames_ >= o.max_lost_frames)
+    return {"lost_tracks", "fewer than " + std::to_string(o.min_tracked_features) + " tracked features in " +
+                               std::to_string(lost_frames_) + " frames"};
+  return {};
 }
 
 void Estimator::Reset() {
@@ -226,6 +247,7 @@ void Estimator::Reset() {
   prior_.reset();
   bias_prior_.reset();
   initialized_ = false;
+  lost_frames_ = 0;
 }
 
 void Estimator::Slide(bool marginalize_oldest, bool with_prior) {

@@ -34,6 +34,7 @@
 #include "estimator/imu_gating.h"
 #include "estimator/initializer.h"
 #include "estimator/marginalization.h"
+#include "estimator/pose_covariance.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/preintegration.h"
 #include "estimator/reprojection_factor.h"
@@ -62,9 +63,15 @@ class Estimator {
                        const std::vector<double>* imu_variance_scale = nullptr);
 
   NavState newest_state() const;
+  // The newest state's pose covariance (pose_covariance.h) after the frame AddFrame returned kTracking for;
+  // empty when options.pose_covariance is off or it could not be computed.
+  const std::optional<Matrix6d>& newest_pose_covariance() const { return newest_pose_covariance_; }
   bool initialized() const { return initialized_; }
   const std::string& failure_reason() const { return failure_reason_; }
   int resets() const { return resets_; }
+  // How often each failure check fired (reset or stop), by name: "accel_bias", "gyro_bias", "speed",
+  // "position_jump", "z_jump", "rotation_jump", "lost_tracks", "non_finite", "solver".
+  const std::map<std::string, int>& failure_checks() const { return failure_checks_; }
   int keyframes() const { return keyframes_; }
   // Marginalizations that failed (nothing left to keep, or non-finite numbers): the prior was dropped.
   int marginalization_failures() const { return marginalization_failures_; }
@@ -80,6 +87,8 @@ class Estimator {
     double speed_bias[kSpeedBiasSize] = {};
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
+    // The pose covariance estimated when this frame was the newest (zero before: the initial window).
+    Matrix6d P_pose = Matrix6d::Zero();
 
     NavState State() const;
     void SetState(const NavState& s);
@@ -103,7 +112,14 @@ class Estimator {
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
   ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
-  std::string DetectFailure(const Eigen::Vector3d& previous_p_W) const;
+  // A failure check that fired: its name (failure_checks()) and what it saw; `check` empty when none did.
+  struct Failure {
+    std::string check;
+    std::string reason;
+  };
+  // The checks of FailureOptions on the window after a solve; `previous` is the frame before the newest as it
+  // was before the solve.
+  Failure DetectFailure(const NavState& previous) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
   void MarginalizeOldest(bool with_prior);
@@ -112,6 +128,8 @@ class Estimator {
   // fails.
   void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
   void Reset();
+  // The newest pose's covariance from the window's information (estimator_covariance.cc).
+  std::optional<Matrix6d> NewestPoseCovariance();
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it), from
   // reprojection_factors_.
@@ -150,10 +168,13 @@ class Estimator {
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;
   int resets_ = 0;
+  int lost_frames_ = 0;  // consecutive frames with fewer than options_.failure.min_tracked_features tracks
+  std::map<std::string, int> failure_checks_;
   int keyframes_ = 0;
   int marginalization_failures_ = 0;
   EstimatorTiming timing_;
   GatingStats gating_;
+  std::optional<Matrix6d> newest_pose_covariance_;
 };
 
 }  // namespace vigil::estimator

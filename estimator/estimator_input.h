@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,7 @@ struct EstimatorTiming {
   double optimize_s = 0.0;
   double marginalize_s = 0.0;
   double initialize_s = 0.0;
+  double covariance_s = 0.0;  // the newest pose's covariance (pose_covariance.h)
   int optimizations = 0;
   int solver_iterations = 0;  // Ceres iterations (successful and unsuccessful steps) over all solves
   int marginalizations = 0;
@@ -65,8 +67,13 @@ struct EstimatorResult {
   // never NaN/Inf. Trajectory rows are the same poses.
   std::vector<NavState> states;
   Trajectory trajectory;
+  // One per trajectory row when options.pose_covariance (else empty): the pose's covariance in its tangent
+  // [delta p_W, delta theta_B] (pose_covariance.h); rows whose covariance could not be computed are NaN.
+  std::vector<Eigen::Matrix<double, 6, 6>> pose_covariances;
   double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // time of the first successful init
   int resets = 0;                    // failure-detection resets (each followed by re-initialization)
+  int stops = 0;                     // failure-detection stops (1 when a failure ended the run, else 0)
+  std::map<std::string, int> failure_checks;  // resets + stops by the check that fired (Estimator)
   int frames = 0;                    // camera frames processed
   int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
   int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time

@@ -184,11 +184,19 @@ struct SolverOptions {
   }
 };
 
+// The estimator's checks of its own state after every solve (VINS-Mono's failure detection: bias norms and
+// position jumps; vigil adds the speed, the rotation jump and lost tracks, which VINS-Mono's code carries
+// disabled). A check that fires resets the window for re-initialization when the initializer can do that
+// (init: vins) and otherwise stops the run; EstimatorResult counts both, and which check fired.
 struct FailureOptions {
-  double max_accel_bias = 2.5;       // |b_a| [m/s^2]
-  double max_gyro_bias = 1.0;        // |b_g| [rad/s]
-  double max_position_jump_m = 5.0;  // newest position change between two frames [m]
-  double max_z_jump_m = 1.0;         // newest z change between two frames [m]
+  double max_accel_bias = 2.5;          // |b_a| [m/s^2]
+  double max_gyro_bias = 1.0;           // |b_g| [rad/s]
+  double max_position_jump_m = 5.0;     // newest position change between two frames [m]
+  double max_z_jump_m = 1.0;            // newest z change between two frames [m]
+  double max_speed_mps = 30.0;          // |v_W| of the newest frame [m/s]
+  double max_rotation_jump_deg = 50.0;  // newest orientation change between two frames [deg]
+  int min_tracked_features = 2;         // fewer tracked features than this ...
+  int max_lost_frames = 20;             // ... in this many consecutive frames
 
   template <class V>
   void Visit(V& v) {
@@ -202,6 +210,18 @@ struct FailureOptions {
             Bounds::Positive());
     v.Field("max_z_jump_m", max_z_jump_m,
             "failure when the newest z moves more than this between two frames [m]", Bounds::Positive());
+    v.Field("max_speed_mps", max_speed_mps, "failure when the newest frame's speed exceeds this [m/s]",
+            Bounds::Positive());
+    v.Field("max_rotation_jump_deg", max_rotation_jump_deg,
+            "failure when the newest orientation turns more than this between two frames [deg]",
+            Bounds::Closed(1.0, 180.0));
+    v.Field("min_tracked_features", min_tracked_features,
+            "failure when fewer already-known features than this are tracked into max_lost_frames "
+            "consecutive frames (0: off)",
+            Bounds::NonNegative());
+    v.Field("max_lost_frames", max_lost_frames,
+            "consecutive frames with fewer than min_tracked_features tracked features before a failure",
+            Bounds::AtLeast(1));
   }
 };
 
@@ -216,6 +236,7 @@ struct EstimatorOptions {
   FailureOptions failure;
   ImuNoiseModelOptions imu_noise;
   MitigationOptions mitigation;
+  bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
 
   template <class V>
   void Visit(V& v) {
@@ -234,6 +255,9 @@ struct EstimatorOptions {
     v.Section("imu_noise", imu_noise,
               "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
     v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
+    v.Field("pose_covariance", pose_covariance,
+            "compute each output pose's covariance (the marginal of the newest frame of the window, with the "
+            "gauge chained from the oldest frame) for the NEES");
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -78,6 +79,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       const FrameStatus status = estimator.AddFrame(frame.t_ns, features_n, imu, &trust.variance_scale);
       if (status == FrameStatus::kFailed) {
         result.ok = false;
+        result.stops = 1;
         result.failure_reason = estimator.failure_reason();
         break;
       }
@@ -85,6 +87,9 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       const NavState state = estimator.newest_state();
       result.states.push_back(state);
       result.trajectory.push_back(StampedPose{state.t_ns, state.p_W, state.q_WB});
+      if (options.pose_covariance)
+        result.pose_covariances.push_back(estimator.newest_pose_covariance().value_or(
+            Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN())));
     }
   } catch (const std::exception& e) {
     // Numerical trouble must not escape as a crash: the run fails with the reason.
@@ -97,6 +102,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   }
   if (estimator.initialized_at_ns()) result.initialized_at_s = NsToS(*estimator.initialized_at_ns());
   result.resets = estimator.resets();
+  result.failure_checks = estimator.failure_checks();
   result.keyframes = estimator.keyframes();
   result.marginalization_failures = estimator.marginalization_failures();
   result.timing = estimator.timing();

@@ -55,6 +55,8 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
   }
   ev.ate_trans_m = ComputeStatistics(e_trans);
   ev.ate_rot_deg = ComputeStatistics(e_rot);
+  ev.divergence_bound_m = options.divergence.length_fraction * ev.gt_length_m + options.divergence.margin_m;
+  ev.diverged = ev.ate_trans_m.rmse > ev.divergence_bound_m;
 
   for (RelativeErrorStatistics& rel : ev.relative) {
     const RelativeErrors r = ComputeRelativeErrors(T_est, T_gt, rel.distance_m, ev.alignment.scale);
@@ -82,6 +84,9 @@ nlohmann::json EvaluationJson(const TrajectoryEvaluation& ev) {
                                 {"rot_deg", StatisticsJson(rel.rot_deg)}});
   json["coverage"] = ev.coverage;
   json["gt_length_m"] = ev.gt_length_m;
+  json["divergence"] = {{"bound_m", ev.divergence_bound_m}, {"diverged", ev.diverged}};
+  json["nees"] = {{"position", StatisticsJson(ev.nees.position)},
+                  {"orientation", StatisticsJson(ev.nees.orientation)}};
   return json;
 }
 

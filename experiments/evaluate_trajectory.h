@@ -16,6 +16,7 @@
 #include "experiments/alignment.h"
 #include "experiments/association.h"
 #include "experiments/evaluation_options.h"
+#include "experiments/nees.h"
 #include "experiments/statistics.h"
 
 namespace vigil::experiments {
@@ -35,7 +36,13 @@ struct TrajectoryEvaluation {
   // coverage = 1 and this one is shorter when the estimate starts late (initialization) or stops early.
   double gt_length_m = 0.0;
   ErrorStatistics ate_trans_m, ate_rot_deg;
+  // options.divergence applied: the largest ATE RMSE that is not divergence, and whether the run exceeds it
+  // (false when nothing matched: such a run is failed, not diverged).
+  double divergence_bound_m = 0.0;
+  bool diverged = false;
   std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
+  // Position and orientation NEES (nees.h); set by the caller that has the pose covariances (n = 0 without).
+  NeesStatistics nees;
 };
 
 // Never throws for a poor or empty estimate: with no matched pose every statistic has n = 0.
@@ -45,8 +52,9 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
 
 // {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
 // [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
-// ..} with STATS = {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment
-// count); the metrics.json of a run directory (docs/formats.md, docs/sweeps.md).
+// .., "divergence": {"bound_m", "diverged"}, "nees": {"position": STATS, "orientation": STATS}} with STATS =
+// {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment count); the
+// metrics.json of a run directory (docs/formats.md, docs/sweeps.md).
 nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 
 // A readable multi-line table of the same numbers (for `vigil eval`).

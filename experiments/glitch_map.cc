@@ -8,6 +8,7 @@
 #include "core/format.h"
 #include "experiments/metrics_access.h"
 #include "experiments/sweep_aggregate.h"
+#include "experiments/sweep_engine.h"
 
 namespace vigil::experiments {
 namespace {
@@ -28,7 +29,7 @@ RunTable ReadRuns(const std::filesystem::path& dir, const SweepSpec& spec) {
       return;
     }
     const double ate = MetricNumber(*m, {"ate", "trans_m", "rmse"});
-    if (MetricText(*m, "status") != "ok" || !std::isfinite(ate)) {
+    if (IsFailed(*m) || !std::isfinite(ate)) {
       ++table.failed[run.cell];
       return;
     }

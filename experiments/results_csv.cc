@@ -91,6 +91,7 @@ std::string ResultsCsvWriter::Header() const {
   }
   h += ",detector,flagged_samples,glitched_samples,precision,recall,f1,imu_rmse_raw,imu_rmse_cleaned";
   h += ",estimator_resets";
+  h += ",nees_position_mean,nees_orientation_mean";
   return h;
 }
 
@@ -119,6 +120,8 @@ std::string ResultsCsvWriter::Row(const SweepRunRef& run, const SweepCell& cell,
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "raw"}));
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "cleaned"}));
   r += "," + Number(MetricNumber(m, {"estimator", "resets"}));
+  r += "," + Number(MetricNumber(m, {"nees", "position", "mean"}));
+  r += "," + Number(MetricNumber(m, {"nees", "orientation", "mean"}));
   return r;
 }
 

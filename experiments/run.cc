@@ -146,9 +146,11 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
 
   t = Clock::now();
   const Trajectory groundtruth = GroundTruthAtFrames(data.dataset.groundtruth, data.dataset.frames);
-  const TrajectoryEvaluation evaluation = data.with_groundtruth
-                                              ? EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
-                                              : TrajectoryEvaluation{};
+  TrajectoryEvaluation evaluation = data.with_groundtruth
+                                        ? EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
+                                        : TrajectoryEvaluation{};
+  if (data.with_groundtruth)
+    evaluation.nees = ComputeNees(groundtruth, result.trajectory, result.pose_covariances, evaluation.alignment);
   summary.wall.evaluate_s = SecondsSince(t);
 
   RunConfig resolved = config;  // ToYaml visits (non-const)

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/format.h"
 #include "experiments/metrics_access.h"
 
 namespace vigil::experiments {
@@ -15,16 +16,26 @@ double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * second
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const TrajectoryEvaluation& evaluation, const nlohmann::json& detection) {
   nlohmann::json m;
-  // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success.
+  // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success; one
+  // whose error leaves the divergence bound (evaluation_options.h) is diverged.
   const bool evaluated =
       std::isfinite(evaluation.ate_trans_m.rmse) && std::isfinite(evaluation.ate_rot_deg.rmse);
-  const bool ok = result.ok && evaluated;
-  m["status"] = ok ? "ok" : "failed";
-  m["failure_reason"] = ok           ? ""
-                        : !result.ok ? result.failure_reason
-                                     : "evaluation: the ATE is not finite (" +
-                                           std::to_string(evaluation.matched_poses) +
-                                           " matched poses); check the ground truth and the estimate";
+  if (!result.ok) {
+    m["status"] = "failed";
+    m["failure_reason"] = result.failure_reason;
+  } else if (!evaluated) {
+    m["status"] = "failed";
+    m["failure_reason"] = "evaluation: the ATE is not finite (" + std::to_string(evaluation.matched_poses) +
+                          " matched poses); check the ground truth and the estimate";
+  } else if (evaluation.diverged) {
+    m["status"] = "diverged";
+    m["failure_reason"] = "ATE RMSE " + FormatFixed(evaluation.ate_trans_m.rmse, 3) + " m exceeds " +
+                          FormatFixed(evaluation.divergence_bound_m, 3) + " m (divergence bound over " +
+                          FormatFixed(evaluation.gt_length_m, 1) + " m travelled)";
+  } else {
+    m["status"] = "ok";
+    m["failure_reason"] = "";
+  }
   m["seed"] = summary.seed;
   m["duration_s"] = summary.duration_s;
   const RunWallTimes& w = summary.wall;
@@ -34,6 +45,8 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   m["estimator"] = {{"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
                     {"initialized_at_s", NumberOrNull(result.initialized_at_s)},
                     {"resets", result.resets},
+                    {"stops", result.stops},
+                    {"failure_checks", result.failure_checks},
                     {"frames", result.frames},
                     {"keyframes", result.keyframes},
                     {"marginalization_failures", result.marginalization_failures},
@@ -42,10 +55,12 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                      {{"optimize_s", t.optimize_s},
                       {"marginalize_s", t.marginalize_s},
                       {"initialize_s", t.initialize_s},
+                      {"covariance_s", t.covariance_s},
                       {"optimizations", t.optimizations},
                       {"marginalizations", t.marginalizations},
                       {"optimize_ms_per_frame", PerFrameMs(t.optimize_s, result.frames)},
                       {"marginalize_ms_per_frame", PerFrameMs(t.marginalize_s, result.frames)},
+                      {"covariance_ms_per_frame", PerFrameMs(t.covariance_s, result.frames)},
                       {"estimate_ms_per_frame", PerFrameMs(w.estimate_s, result.frames)}}}};
   const estimator::MitigationStats& mit = result.mitigation;
   m["estimator"]["mitigation"] = {{"repeated_timestamps", mit.repeated_timestamps},
@@ -72,8 +87,8 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   if (!reason.empty()) s += " (" + reason + ")";
   char buf[256];
   if (m.value("evaluation", std::string()) == kEvaluationSkipped) {
-    std::snprintf(buf, sizeof(buf), ": %s; %lld poses estimated",
-                  kEvaluationSkipped, static_cast<long long>(m["estimator"].value("output_poses", 0)));
+    std::snprintf(buf, sizeof(buf), ": %s; %lld poses estimated", kEvaluationSkipped,
+                  static_cast<long long>(m["estimator"].value("output_poses", 0)));
     return s + buf;
   }
   const nlohmann::json& ate = m.at("ate");
@@ -85,6 +100,12 @@ std::string RunSummaryLine(const nlohmann::json& m) {
     const nlohmann::json& r = m.at("relative").front();
     std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", MetricNumber(r, {"distance_m"}),
                   MetricNumber(r, {"trans_m", "mean"}), MetricNumber(r, {"yaw_deg", "mean"}));
+    s += buf;
+  }
+  const double nees_p = MetricNumber(m, {"nees", "position", "mean"});
+  if (std::isfinite(nees_p)) {
+    std::snprintf(buf, sizeof(buf), ", NEES %.2f pos / %.2f rot (3 = consistent)", nees_p,
+                  MetricNumber(m, {"nees", "orientation", "mean"}));
     s += buf;
   }
   // A dropped marginalization prior (the window then holds only its own information) is said.

@@ -30,7 +30,8 @@ struct RunSummary {
   RunWallTimes wall;
 };
 
-// status "ok" when result.ok, else "failed" with result.failure_reason; the evaluation describes what the
+// status "failed" with result.failure_reason when !result.ok or the ATE is not finite, "diverged" (with the
+// error and the bound as failure_reason) when evaluation.diverged, else "ok"; the evaluation describes what the
 // estimator produced (possibly nothing); `detection` is the "detection" object (detection_stage.h).
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const TrajectoryEvaluation& evaluation, const nlohmann::json& detection);

@@ -23,6 +23,7 @@ double CellResult::Recall() const { return Ratio(true_flagged, glitched); }
 void CellResult::Merge(const CellResult& o) {
   runs += o.runs;
   failed += o.failed;
+  diverged += o.diverged;
   missing += o.missing;
   for (const auto& [reason, count] : o.failure_reasons) failure_reasons[reason] += count;
   ate_rmse_m.insert(ate_rmse_m.end(), o.ate_rmse_m.begin(), o.ate_rmse_m.end());
@@ -59,6 +60,7 @@ void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances
     ++cell->failure_reasons[reason.empty() ? "(no reason given)" : reason];
     return;
   }
+  if (IsDiverged(m)) ++cell->diverged;
   const double ate = MetricNumber(m, {"ate", "trans_m", "rmse"});
   if (std::isfinite(ate)) cell->ate_rmse_m.push_back(ate);
   for (std::size_t d = 0; d < nd; ++d) {
@@ -127,6 +129,7 @@ SweepAggregate AggregateSweep(const fs::path& dir, const SweepSpec& spec,
     if (metrics.is_discarded()) throw InputError(path.string() + ": not valid JSON");
     AddRunMetrics(metrics, distances_m, &cell);
     if (IsFailed(metrics)) agg.failed_ids.push_back(run.id);
+    if (IsDiverged(metrics)) agg.diverged_ids.push_back(run.id);
     if (visit) visit(run, cells[run.cell], &metrics);
   }
   return agg;

@@ -2,8 +2,10 @@
 // regression gate are made of.
 //
 // A cell is (group, method): a group is one combination of axis settings (a column of table 2, e.g.
-// "noise_50_10"). Errors are taken from successful runs only; failed runs are counted (with their reasons),
-// runs not on disk are counted as missing. Relative errors are pooled: the mean over every sub-trajectory of
+// "noise_50_10"). Errors are taken from the runs that finished (status ok or diverged: a diverged run's
+// error is large but measured, and the means include it as they did before the verdict existed); failed
+// runs are counted (with their reasons), diverged runs are counted beside them, runs not on disk are counted
+// as missing. Relative errors are pooled: the mean over every sub-trajectory of
 // every run (each run's mean weighted by its number of sub-trajectories n), as when all segments of all runs
 // are evaluated together. Detection precision/recall are pooled the same way (over samples).
 #pragma once
@@ -22,7 +24,7 @@
 namespace vigil::experiments {
 
 struct CellResult {
-  std::size_t runs = 0, failed = 0, missing = 0;
+  std::size_t runs = 0, failed = 0, diverged = 0, missing = 0;
   std::map<std::string, std::size_t> failure_reasons;  // reason -> count
   std::vector<double> ate_rmse_m;                      // one per successful run
   // Per distance (SweepAggregate::distances_m): sums of run mean x n, and of n.
@@ -30,7 +32,7 @@ struct CellResult {
   std::vector<std::vector<double>> re_trans_run_means;  // per distance, one per run (for std / median)
   double flagged = 0, glitched = 0, true_flagged = 0;   // detection, summed over runs
 
-  std::size_t ok() const { return runs - failed - missing; }
+  std::size_t ok() const { return runs - failed - diverged - missing; }
   double PooledReTrans(std::size_t d) const;  // NaN without segments
   double PooledReYaw(std::size_t d) const;
   double Precision() const;  // NaN when nothing was flagged
@@ -44,7 +46,7 @@ struct SweepAggregate {
   std::vector<double> distances_m;
   std::vector<CellResult> cells;  // groups.size() x methods.size(), group-major
   std::size_t runs = 0, missing = 0;
-  std::vector<std::string> missing_ids, failed_ids;  // plan order
+  std::vector<std::string> missing_ids, failed_ids, diverged_ids;  // plan order
 
   const CellResult& Cell(std::size_t group, std::size_t method) const {
     return cells[group * methods.size() + method];

@@ -41,7 +41,14 @@ nlohmann::json FailureMetrics(const std::string& reason) {
 
 bool IsFailed(const nlohmann::json& metrics) {
   const auto it = metrics.find("status");
-  return it == metrics.end() || !it->is_string() || it->get<std::string>() != "ok";
+  if (it == metrics.end() || !it->is_string()) return true;
+  const std::string status = it->get<std::string>();
+  return status != "ok" && status != "diverged";
+}
+
+bool IsDiverged(const nlohmann::json& metrics) {
+  const auto it = metrics.find("status");
+  return it != metrics.end() && it->is_string() && it->get<std::string>() == "diverged";
 }
 
 fs::path RunDirectory(const fs::path& sweep_dir, const std::string& id) { return sweep_dir / "runs" / id; }

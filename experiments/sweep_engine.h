@@ -45,8 +45,11 @@ struct SweepOutcome {
   double wall_time_s = 0.0;
 };
 
-// Status of a metrics document: true unless "status" is "ok".
+// Status of a metrics document: true unless "status" is "ok" or "diverged" (a run that finished with an
+// error beyond the divergence bound: its errors still count, run_metrics.h).
 bool IsFailed(const nlohmann::json& metrics);
+// True when "status" is "diverged".
+bool IsDiverged(const nlohmann::json& metrics);
 
 // The run directory of `id` and the file that marks it finished.
 std::filesystem::path RunDirectory(const std::filesystem::path& sweep_dir, const std::string& id);

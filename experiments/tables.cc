@@ -70,17 +70,22 @@ ResultTable MakeTable4(const SweepAggregate& agg, const std::vector<std::string>
 }
 
 std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
-  std::size_t failed = 0;
-  for (const auto& c : agg.cells) failed += c.failed;
+  std::size_t failed = 0, diverged = 0;
+  for (const auto& c : agg.cells) {
+    failed += c.failed;
+    diverged += c.diverged;
+  }
   std::string s = "# Sweep summary\n\n";
   // File names only: the same summary wherever the sweep directory and the configs are.
   s += "Sweep: `" + fs::path(spec.path).filename().string() + "`; base configuration `" +
        spec.base.filename().string() + "`.\n\n";
   s += std::to_string(agg.runs) + " runs (" + std::to_string(agg.groups.size()) + " groups x " +
        std::to_string(agg.methods.size()) + " methods x " + std::to_string(spec.seeds.size()) +
-       " seeds): " + std::to_string(agg.runs - failed - agg.missing) + " ok, " + std::to_string(failed) +
-       " failed, " + std::to_string(agg.missing) + " missing.\n\n";
-  s += "Errors are over successful runs only. Relative errors are pooled over every sub-trajectory of every "
+       " seeds): " + std::to_string(agg.runs - failed - diverged - agg.missing) + " ok, " +
+       std::to_string(diverged) + " diverged, " + std::to_string(failed) + " failed, " +
+       std::to_string(agg.missing) + " missing.\n\n";
+  s += "Errors are over the runs that finished: ok and diverged (an ATE RMSE beyond the divergence bound, "
+       "evaluation.divergence; counted in the diverged column), not failed ones. Relative errors are pooled over every sub-trajectory of every "
        "run "
        "(a run's mean weighted by its number of segments). Paper values (Long et al., IFAC 2020) in "
        "parentheses where the row and column names match.\n\n";
@@ -102,15 +107,16 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   s += SideBySideMarkdown(MakeTable4(agg, all), PaperTable4()) + "\n";
 
   s += "## ATE translation RMSE [m] per cell\n\n";
-  s += "| group | method | runs | ok | failed | missing | mean | std | median | min | max | detection "
-       "precision | "
-       "detection recall |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  s += "| group | method | runs | ok | diverged | failed | missing | mean | std | median | min | max | "
+       "detection precision | detection recall |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t g = 0; g < agg.groups.size(); ++g) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
       const ErrorStatistics st = ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
-           std::to_string(c.ok()) + " | " + std::to_string(c.failed) + " | " + std::to_string(c.missing) +
+           std::to_string(c.ok()) + " | " + std::to_string(c.diverged) + " | " + std::to_string(c.failed) +
+           " | " + std::to_string(c.missing) +
            " | " + FormatCell(st.mean) + " | " + FormatCell(st.std) + " | " + FormatCell(st.median) + " | " + FormatCell(st.min) + " | " +
            FormatCell(st.max) + " | " + FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " |\n";
     }

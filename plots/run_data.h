@@ -52,7 +52,12 @@ struct RunData {
   std::vector<int64_t> detection_t_ns;  // detections.csv (empty when absent)
   std::vector<uint8_t> flagged;
 
-  bool ok() const { return metrics.is_object() && metrics.value("status", "") == "ok"; }
+  // The run finished and was evaluated ("ok", or "diverged": its errors are measured, only large).
+  bool ok() const {
+    if (!metrics.is_object()) return false;
+    const std::string status = metrics.value("status", "");
+    return status == "ok" || status == "diverged";
+  }
 };
 
 // Reads a run directory; config.yaml is required, the other files are optional. Bad files throw InputError.

@@ -95,7 +95,7 @@ TEST(Tables, SummaryCountsFailuresAndShowsExtraMethodsAndThePaper) {
   EXPECT_EQ(cell.failed, 1u);
   EXPECT_EQ(cell.ok(), 2u);
   const std::string summary = ReadFile(dir.path() / "out" / "summary.md");
-  EXPECT_NE(summary.find("24 runs (2 groups x 4 methods x 3 seeds): 23 ok, 1 failed, 0 missing"),
+  EXPECT_NE(summary.find("24 runs (2 groups x 4 methods x 3 seeds): 23 ok, 0 diverged, 1 failed, 0 missing"),
             std::string::npos);
   EXPECT_NE(summary.find("| noise_50_10 | original | 1 | diverged: newest position jumped 7 m |"),
             std::string::npos);

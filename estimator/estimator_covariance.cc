@@ -1,0 +1,58 @@
+// The newest pose's covariance: the window's information at the current estimate (the same factors the
+// solve used, robust loss applied as Ceres does), the feature depths eliminated by the marginalization's
+// Schur complement, the gauge fixed at the oldest frame and chained from its own covariance
+// (pose_covariance.h).
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "estimator/estimator.h"
+#include "estimator/imu_factor.h"
+
+namespace vigil::estimator {
+
+std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
+  if (window_.size() < 2) return std::nullopt;
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+  std::vector<MarginalizationTerm> terms;
+  std::set<const double*> dropped;
+  if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {window_.front()->speed_bias}});
+  for (std::size_t k = 1; k < window_.size(); ++k) {
+    auto factor = std::make_unique<ImuFactor>(*window_[k]->imu_from_prev, g_W_);
+    terms.push_back(
+        {factor.get(),
+         nullptr,
+         {window_[k - 1]->pose, window_[k - 1]->speed_bias, window_[k]->pose, window_[k]->speed_bias}});
+    costs.push_back(std::move(factor));
+  }
+  std::vector<ReprojectionTerm> reprojections;
+  for (auto& [id, track] : features_.tracks()) {
+    if (!features_.Usable(track)) continue;
+    dropped.insert(&track.inv_depth);
+    AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
+  }
+  for (const ReprojectionTerm& term : reprojections)
+    terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
+
+  // The depths eliminated: what is left is the information of the window's states.
+  LinearPrior states;
+  if (!Marginalize(prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold, &states))
+    return std::nullopt;
+  std::map<const double*, int> column;
+  int c = 0;
+  for (const LinearPrior::Block& b : states.blocks) {
+    column[b.address] = c;
+    c += b.tangent;
+  }
+  const Frame& oldest = *window_.front();
+  const Frame& newest = *window_.back();
+  if (!column.count(oldest.pose) || !column.count(newest.pose)) return std::nullopt;
+  const NavState o = oldest.State(), n = newest.State();
+  Matrix6d relative;
+  if (!GaugeFixedCovariance(states.H, column[oldest.pose], o.q_WB, column[newest.pose], &relative))
+    return std::nullopt;
+  return ChainGaugeCovariance(relative, oldest.P_pose, o.p_W, o.q_WB, n.p_W, n.q_WB);
+}
+
+}  // namespace vigil::estimator
