@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/random.h"
 #include "core/types.h"
 #include "sim/trajectory_model.h"
 
@@ -20,6 +21,13 @@ namespace vigil::sim {
 // Landmark position in the camera frame for the body pose (q_WB, p_W).
 Eigen::Vector3d LandmarkInCamera(const CameraModel& camera, const Eigen::Quaterniond& q_WB,
                                  const Eigen::Vector3d& p_W, const Eigen::Vector3d& landmark_W);
+
+// The observations of `landmarks` in one frame at t_ns from the body pose (q_WB, p_W), as described above
+// (pixel noise drawn from `rng`, two draws per visible landmark). With lens distortion, a landmark is visible
+// when both its pinhole pixel and its distorted (image) pixel lie inside the image.
+CameraFrame ObserveLandmarks(const CameraModel& camera, const Eigen::Quaterniond& q_WB,
+                             const Eigen::Vector3d& p_W, const std::vector<Landmark>& landmarks, int64_t t_ns,
+                             Rng* rng);
 
 std::vector<CameraFrame> SimulateFeatureTracks(const TrajectoryModel& motion, const CameraModel& camera,
                                                const std::vector<Landmark>& landmarks, int64_t t_first_ns,

@@ -16,6 +16,7 @@
 #include "sim/landmarks.h"
 #include "sim/scale_misalignment.h"
 #include "sim/scene.h"
+#include "sim/semi_real.h"
 #include "sim/trajectory_model.h"
 
 namespace vigil::sim {
@@ -46,6 +47,11 @@ Scene ScenarioScene(const SimOptions& options, const TrajectoryModel& motion) {
 }
 
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
+  if (options.imu.source == ImuSource::kRecording) {
+    ValidateSimOptions(options, "simulator options");
+    Dataset d = SimulateSemiReal(options, seed);
+    return {std::move(d.imu_clean), std::move(d.groundtruth)};
+  }
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
   ImuSynthesis out = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
   ApplyScaleMisalignment(options.faults.scale, &out.imu);
@@ -55,6 +61,10 @@ ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
 }
 
 Dataset Simulate(const SimOptions& options, uint64_t seed) {
+  if (options.imu.source == ImuSource::kRecording) {
+    ValidateSimOptions(options, "simulator options");
+    return SimulateSemiReal(options, seed);
+  }
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
   Dataset d;
   ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
