@@ -34,9 +34,16 @@ CameraFrame ObserveLandmarks(const CameraModel& camera, const Eigen::Quaterniond
 std::vector<CameraFrame> SimulateFeatureTracks(const TrajectoryModel& motion, const CameraModel& camera,
                                                const std::vector<Landmark>& landmarks, int64_t t_first_ns,
                                                int64_t t_last_ns, uint64_t seed) {
+  return SimulateFeatureTracksAt(motion, camera, landmarks,
+                                 CameraFrameTimes(camera.rate_hz, t_first_ns, t_last_ns), seed);
+}
+
+std::vector<CameraFrame> SimulateFeatureTracksAt(const TrajectoryModel& motion, const CameraModel& camera,
+                                                 const std::vector<Landmark>& landmarks,
+                                                 const std::vector<int64_t>& times_ns, uint64_t seed) {
   Rng rng(seed, "pixels");
   std::vector<CameraFrame> frames;
-  for (const int64_t t_ns : CameraFrameTimes(camera.rate_hz, t_first_ns, t_last_ns)) {
+  for (const int64_t t_ns : times_ns) {
     const TrajectoryState x = motion.StateAt(NsToS(t_ns));
     frames.push_back(ObserveLandmarks(camera, x.q_WB, x.p_W, landmarks, t_ns, &rng));
   }

@@ -9,6 +9,7 @@
 #include "core/interpolation.h"
 #include "core/random.h"
 #include "sim/camera_simulator.h"
+#include "sim/camera_timing.h"
 #include "sim/glitch_injector.h"
 #include "sim/imu_faults.h"
 #include "sim/landmarks.h"
@@ -57,8 +58,8 @@ void CheckCameraTimesInImu(const Recording& recording, const std::string& imu_fi
     if (image.t_ns < imu.front().t_ns || image.t_ns > imu.back().t_ns)
       throw InputError(Located(image.list_path, image.list_line,
                                "imu.recording: camera time " + std::to_string(image.t_ns) +
-                                   " is outside the IMU's span (" + std::to_string(imu.front().t_ns) + " .. " +
-                                   std::to_string(imu.back().t_ns) + ", " + imu_file + ")"));
+                                   " is outside the IMU's span (" + std::to_string(imu.front().t_ns) +
+                                   " .. " + std::to_string(imu.back().t_ns) + ", " + imu_file + ")"));
 }
 
 // The recorded IMU samples spanning [t0_ns, t1_ns]; throws when the IMU does not cover it.
@@ -77,7 +78,7 @@ ImuStream ImuSpanning(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns, const 
   auto first = std::lower_bound(imu.begin(), imu.end(), t0_ns, by_time);
   if (first->t_ns > t0_ns) --first;  // the last sample before the window's start
   while (first != imu.begin() && (first - 1)->t_ns == first->t_ns) --first;  // repeated timestamps
-  auto last = std::lower_bound(imu.begin(), imu.end(), t1_ns, by_time);  // the first at or after the end
+  auto last = std::lower_bound(imu.begin(), imu.end(), t1_ns, by_time);      // the first at or after the end
   while (last + 1 != imu.end() && (last + 1)->t_ns == last->t_ns) ++last;
   return ImuStream(first, last + 1);
 }
@@ -165,14 +166,14 @@ Dataset SimulateSemiReal(const SimOptions& options, uint64_t seed) {
   d.imu = d.imu_clean;
   d.glitches = InjectGlitches(options.glitch, seed, &d.imu);
   SimOptions at_recorded_rate = options;
-  at_recorded_rate.imu.rate_hz = static_cast<double>(d.imu.size() - 1) /
-                                 NsToS(d.imu.back().t_ns - d.imu.front().t_ns);
+  at_recorded_rate.imu.rate_hz =
+      static_cast<double>(d.imu.size() - 1) / NsToS(d.imu.back().t_ns - d.imu.front().t_ns);
   ApplyMeasurementFaults(at_recorded_rate, seed, &d.imu, &d.imu_clean, &d.glitches);
   std::vector<Eigen::Vector3d> path_W;
   for (const NavState& s : d.groundtruth) path_W.push_back(s.p_W);
   d.landmarks = MakeLandmarks(options.landmarks, path_W, seed);
   Rng rng(seed, "pixels");
-  for (int64_t t_ns : w.frame_times_ns) {
+  for (int64_t t_ns : ApplyCameraTiming(options.faults.camera, d.camera.rate_hz, seed, w.frame_times_ns)) {
     NavState x;
     InterpolateNavState(d.groundtruth, t_ns, &x);  // frame times lie within the ground truth
     d.frames.push_back(ObserveLandmarks(d.camera, x.q_WB, x.p_W, d.landmarks, t_ns, &rng));

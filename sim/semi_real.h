@@ -3,7 +3,8 @@
 // With imu.source: recording, Simulate() (sim/simulator.h) reads the recording named by imu.recording (a
 // EuRoC folder as published, or a vigil dataset directory; core/euroc.h ReadRecording) instead of
 // synthesizing an IMU, and cuts a window of it:
-//   - window: the ground-truth rows within [t_gt0 + recording_start_s, t_gt0 + recording_start_s + duration_s]
+//   - window: the ground-truth rows within [t_gt0 + recording_start_s, t_gt0 + recording_start_s +
+//   duration_s]
 //     (t_gt0 = the first ground-truth row); the ground truth of the dataset is these rows, as recorded;
 //   - IMU: the recorded samples spanning the window (the last sample at or before its start to the first at
 //     or after its end), values and timestamps as recorded; it must cover the window;
@@ -34,9 +35,9 @@ namespace vigil::sim {
 
 // The recorded part of a semi-real dataset (before any fault or synthesized camera track).
 struct RecordedWindow {
-  ImuStream imu;                      // recorded samples spanning the window
-  std::vector<NavState> groundtruth;  // recorded rows inside the window
-  CameraModel camera;                 // the recording's camera, pixel noise from the options
+  ImuStream imu;                        // recorded samples spanning the window
+  std::vector<NavState> groundtruth;    // recorded rows inside the window
+  CameraModel camera;                   // the recording's camera, pixel noise from the options
   std::vector<int64_t> frame_times_ns;  // camera frame times inside the window
 };
 

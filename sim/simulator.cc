@@ -9,6 +9,7 @@
 #include "core/mesh.h"
 #include "core/output.h"
 #include "sim/camera_simulator.h"
+#include "sim/camera_timing.h"
 #include "sim/glitch_injector.h"
 #include "sim/image_renderer.h"
 #include "sim/imu_faults.h"
@@ -76,8 +77,10 @@ Dataset Simulate(const SimOptions& options, uint64_t seed) {
   ApplyMeasurementFaults(options, seed, &d.imu, &d.imu_clean, &d.glitches);
   d.landmarks = MakeLandmarks(options.landmarks, SamplePath(*motion, options.duration_s), seed);
   d.camera = options.camera;
-  d.frames = SimulateFeatureTracks(*motion, options.camera, d.landmarks, d.imu.front().t_ns,
-                                   d.imu.back().t_ns, seed);
+  const std::vector<int64_t> frame_times =
+      ApplyCameraTiming(options.faults.camera, options.camera.rate_hz, seed,
+                        CameraFrameTimes(options.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns));
+  d.frames = SimulateFeatureTracksAt(*motion, options.camera, d.landmarks, frame_times, seed);
   return d;
 }
 
