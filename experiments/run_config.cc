@@ -6,11 +6,17 @@
 
 #include "core/error.h"
 #include "detectors/detector.h"
+#include "sim/imu_presets.h"
 
 namespace vigil::experiments {
 
-RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides) {
+namespace {
+
+// The file and the overrides over the defaults, with `preset`'s figures as the defaults of imu.noise.*.
+RunConfig LoadLayers(const std::string& path, const std::vector<std::string>& overrides,
+                     sim::ImuPreset preset) {
   RunConfig config;
+  sim::ApplyImuPreset(preset, &config.sim.imu);
   if (!path.empty()) {
     config::LoadFile(path, config);
     sim::ResolveRelativePaths(std::filesystem::path(path).parent_path(),
@@ -19,6 +25,17 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   for (const auto& o : overrides) config::ApplyOverride(o, config);
   sim::ResolveRelativePaths(std::filesystem::current_path(),
                             &config.sim);  // --set paths: relative to the cwd
+  return config;
+}
+
+}  // namespace
+
+RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides) {
+  RunConfig config = LoadLayers(path, overrides, sim::ImuPreset::kNone);
+  // An IMU preset provides defaults: load again over its figures, so the keys the config writes still win.
+  if (config.sim.imu.preset != sim::ImuPreset::kNone)
+    config = LoadLayers(path, overrides, config.sim.imu.preset);
+  sim::ResolveDurationToEnd(&config.sim);
   const std::string origin = path.empty() ? "--set" : path;
   try {
     ValidateRunConfig(config, origin);
@@ -81,8 +98,8 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
-  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.detector.dtw.templates_file,
-                                  config.sim.imu.recording})
+  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
+                                  config.detector.dtw.templates_file, config.sim.imu.recording})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }

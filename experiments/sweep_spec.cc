@@ -421,6 +421,7 @@ RunConfig ResolveCellConfig(const SweepSpec& spec, const SweepCell& cell) {
   RunConfig config = LoadRunConfig(spec.base.string());
   for (const SweepOverride* o : CellOverrides(spec, cell)) Apply(spec.path, *o, &config);
   sim::ResolveRelativePaths(fs::path(spec.path).parent_path(), &config.sim);
+  sim::ResolveDurationToEnd(&config.sim);
   const std::string origin = CellOrigin(spec, cell);
   try {
     ValidateRunConfig(config, origin);

@@ -1,8 +1,10 @@
 #include "sim/imu_synthesizer.h"
 
 #include <cmath>
+#include <memory>
 
 #include "core/random.h"
+#include "sim/vibration.h"
 
 namespace vigil::sim {
 
@@ -46,7 +48,17 @@ ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& opti
                           noise.initial_gyro_bias.at(2));
     b_a = Eigen::Vector3d(noise.initial_accel_bias.at(0), noise.initial_accel_bias.at(1),
                           noise.initial_accel_bias.at(2));
+    // Switch-on biases: their own stream, drawn only when asked, so the other streams never change.
+    if (noise.switch_on_gyro_bias_std > 0.0 || noise.switch_on_accel_bias_std > 0.0) {
+      Rng switch_on_rng(seed, "imu_switch_on_bias");
+      const Eigen::Vector3d d_g = switch_on_rng.NormalVector3();  // draw order: gyro xyz, then accel xyz
+      const Eigen::Vector3d d_a = switch_on_rng.NormalVector3();
+      b_g += noise.switch_on_gyro_bias_std * d_g;
+      b_a += noise.switch_on_accel_bias_std * d_a;
+    }
   }
+  std::unique_ptr<Vibration> vibration;
+  if (options.vibration.enabled()) vibration = std::make_unique<Vibration>(options.vibration, seed);
   for (const int64_t t_ns : times) {
     const TrajectoryState x = motion.StateAt(NsToS(t_ns));
     ImuSample s = IdealImuSample(x, gravity_mps2, t_ns);
@@ -55,6 +67,12 @@ ImuSynthesis SynthesizeImu(const TrajectoryModel& motion, const ImuOptions& opti
       const Eigen::Vector3d n_a = noise_rng.NormalVector3();
       s.w_B += b_g + gyro_sigma * n_g;
       s.a_B += b_a + accel_sigma * n_a;
+    }
+    if (vibration) {
+      Eigen::Vector3d v_w, v_a;
+      vibration->At(NsToS(t_ns), &v_w, &v_a);
+      s.w_B += v_w;
+      s.a_B += v_a;
     }
     NavState gt;
     gt.t_ns = t_ns;

@@ -8,7 +8,10 @@
 // noise enabled, n ~ N(0, density^2 / dt) independently per axis and sample (stream "imu_noise"); the biases
 // start at the configured initial biases and after each sample take a random-walk step b += random_walk *
 // sqrt(dt) * N(0, 1) (stream "imu_bias"). The ground truth row of sample k carries the biases in effect in
-// that sample.
+// that sample. With imu.noise.switch_on_*_bias_std > 0, a N(0, std^2) draw per axis (stream
+// "imu_switch_on_bias") is added to the initial biases; with imu.vibration enabled, the band-limited
+// vibration of sim/vibration.h (stream "imu_vibration") is added to each measured sample. Both streams are
+// used only when asked, so the default dataset is unchanged bit for bit.
 #pragma once
 
 #include <cstdint>

@@ -5,13 +5,18 @@
 namespace vigil::sim {
 
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options) {
-  for (std::string* file : {&options->trajectory.waypoints_file, &options->imu.recording}) {
+  for (std::string* file :
+       {&options->trajectory.waypoints_file, &options->trajectory.recording, &options->imu.recording}) {
     if (file->empty() || std::filesystem::path(*file).is_absolute()) continue;
     *file = std::filesystem::absolute(base_dir / *file).lexically_normal().string();
   }
 }
 
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
+  if (!(options.duration_s > 0.0))
+    throw InputError(origin +
+                     ": duration_s: must be > 0 (0, to the end of the trajectory, needs trajectory.type "
+                     "waypoints or recording)");
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);
   if (options.glitch.enabled && options.glitch.axes.empty())
@@ -42,6 +47,8 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
                      ": images.enabled: rendered images need a simulated trajectory (imu.source simulated)");
   if (options.trajectory.type == TrajectoryType::kWaypoints && options.trajectory.waypoints_file.empty())
     throw InputError(origin + ": trajectory.waypoints_file: required for trajectory.type waypoints");
+  if (options.trajectory.type == TrajectoryType::kRecording && options.trajectory.recording.empty())
+    throw InputError(origin + ": trajectory.recording: required for trajectory.type recording");
 }
 
 }  // namespace vigil::sim

@@ -14,11 +14,31 @@
 
 namespace vigil::sim {
 
-enum class TrajectoryType { kEllipse, kRescue, kWaypoints };
+enum class TrajectoryType { kEllipse, kRescue, kWaypoints, kRecording };
+
+// How a recorded trajectory is fitted (sim/recorded_trajectory.h): a cumulative cubic B-spline on
+// SO(3) x R^3 with uniform knots, fitted to the recorded poses by least squares.
+struct RecordedTrajectoryOptions {
+  double knot_spacing_s = 0.0;  // 0: the recording's median pose spacing
+  double smoothing = 0.05;      // weight of the control points' second differences (dimensionless)
+
+  template <class V>
+  void Visit(V& v) {
+    v.Field("knot_spacing_s", knot_spacing_s,
+            "knot spacing of the spline fitted to a recording [s] (0: the recording's median pose spacing)",
+            config::Bounds::NonNegative());
+    v.Field("smoothing", smoothing,
+            "weight of the spline's second differences against the pose residuals (0: none; larger: "
+            "smoother, farther from the poses)",
+            config::Bounds::NonNegative());
+  }
+};
 
 struct TrajectoryOptions {
   TrajectoryType type = TrajectoryType::kEllipse;
   std::string waypoints_file;  // for type waypoints: timed poses (see configs/README.md)
+  std::string recording;       // for type recording: a ground-truth file or EuRoC folder
+  RecordedTrajectoryOptions spline;
 
   template <class V>
   void Visit(V& v) {
@@ -26,11 +46,17 @@ struct TrajectoryOptions {
         "type", type,
         config::EnumNames<TrajectoryType>{{"ellipse", TrajectoryType::kEllipse},
                                           {"rescue", TrajectoryType::kRescue},
-                                          {"waypoints", TrajectoryType::kWaypoints}},
+                                          {"waypoints", TrajectoryType::kWaypoints},
+                                          {"recording", TrajectoryType::kRecording}},
         "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
-        "waypoints (C2 spline through timed poses)");
+        "waypoints (C2 spline through timed poses), recording (B-spline fitted to a recorded ground truth)");
     v.Field("waypoints_file", waypoints_file,
             "timed pose CSV for type waypoints (relative to the config file; see configs/README.md)");
+    v.Field("recording", recording,
+            "ground truth for type recording: EuRoC state_groundtruth_estimate0/data.csv (or its mav0 folder "
+            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file; see "
+            "docs/recordings-trajectory.md)");
+    v.Section("spline", spline, "the spline fitted to a recording (type recording)");
   }
 };
 
@@ -70,6 +96,8 @@ struct ImuNoiseOptions {
   double accel_bias_random_walk = 1e-4;                      // [m/s^3/sqrt(Hz)]
   std::vector<double> initial_gyro_bias = {0.0, 0.0, 0.0};   // b_g at t = 0 [rad/s]
   std::vector<double> initial_accel_bias = {0.0, 0.0, 0.0};  // b_a at t = 0 [m/s^2]
+  double switch_on_gyro_bias_std = 0.0;                      // per axis, drawn once [rad/s]
+  double switch_on_accel_bias_std = 0.0;                     // per axis, drawn once [m/s^2]
 
   template <class V>
   void Visit(V& v) {
@@ -87,17 +115,62 @@ struct ImuNoiseOptions {
     v.Field("initial_gyro_bias", initial_gyro_bias, "gyro bias b_g at t = 0 (3 numbers: x, y, z) [rad/s]");
     v.Field("initial_accel_bias", initial_accel_bias,
             "accelerometer bias b_a at t = 0 (3 numbers: x, y, z) [m/s^2]");
+    v.Field("switch_on_gyro_bias_std", switch_on_gyro_bias_std,
+            "spread of the gyro bias at switch-on: N(0, std^2) per axis, drawn once per run and added to "
+            "initial_gyro_bias [rad/s]",
+            Bounds::NonNegative());
+    v.Field(
+        "switch_on_accel_bias_std", switch_on_accel_bias_std,
+        "spread of the accelerometer bias at switch-on: N(0, std^2) per axis, drawn once per run and added "
+        "to initial_accel_bias [m/s^2]",
+        Bounds::NonNegative());
   }
 };
 
 enum class ImuSource { kSimulated, kRecording };
+
+// Vibration of the platform (rotors, a track, an engine) as the IMU senses it: band-limited, zero-mean, on
+// every axis (sim/vibration.h). Off while frequency_hz is 0 or both amplitudes are 0.
+struct ImuVibrationOptions {
+  double frequency_hz = 0.0;    // centre of the band (rotor or track frequency)
+  double bandwidth_hz = 10.0;   // width of the band around frequency_hz
+  double accel_rms_mps2 = 0.0;  // per accelerometer axis
+  double gyro_rms_radps = 0.0;  // per gyro axis
+  int components = 16;          // sinusoids per axis
+
+  bool enabled() const { return frequency_hz > 0.0 && (accel_rms_mps2 > 0.0 || gyro_rms_radps > 0.0); }
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field(
+        "frequency_hz", frequency_hz,
+        "centre frequency of the vibration (a rotor or track frequency; above half imu.rate_hz it aliases "
+        "as in a real sampled sensor) [Hz] (0: no vibration)",
+        Bounds::NonNegative());
+    v.Field("bandwidth_hz", bandwidth_hz, "width of the vibration band around frequency_hz [Hz]",
+            Bounds::NonNegative());
+    v.Field("accel_rms_mps2", accel_rms_mps2, "vibration rms on each accelerometer axis [m/s^2]",
+            Bounds::NonNegative());
+    v.Field("gyro_rms_radps", gyro_rms_radps, "vibration rms on each gyro axis [rad/s]",
+            Bounds::NonNegative());
+    v.Field("components", components,
+            "sinusoids per axis, each with a random frequency in the band and a random phase",
+            Bounds::Closed(1, 1000));
+  }
+};
+
+// Sensor classes whose datasheet figures replace the noise model (sim/imu_presets.h).
+enum class ImuPreset { kNone, kAdis16448, kBmi088, kMpu6050 };
 
 struct ImuOptions {
   ImuSource source = ImuSource::kSimulated;
   std::string recording;             // for source recording: a EuRoC folder (sim/semi_real.h)
   double recording_start_s = 0.0;    // semi-real window start, from the recording's first ground-truth row
   double rate_hz = 200.0;
+  ImuPreset preset = ImuPreset::kNone;
   ImuNoiseOptions noise;
+  ImuVibrationOptions vibration;
 
   template <class V>
   void Visit(V& v) {
@@ -114,7 +187,15 @@ struct ImuOptions {
             "window lasts duration_s",
             config::Bounds::NonNegative());
     v.Field("rate_hz", rate_hz, "IMU sampling rate [Hz]", config::Bounds::Positive());
+    v.Enum("preset", preset,
+           config::EnumNames<ImuPreset>{{"none", ImuPreset::kNone},
+                                        {"adis16448", ImuPreset::kAdis16448},
+                                        {"bmi088", ImuPreset::kBmi088},
+                                        {"mpu6050", ImuPreset::kMpu6050}},
+           "sensor class whose figures become the defaults of imu.noise.* (keys written in the config still "
+           "win; docs/imu-models.md); none: vigil's own defaults");
     v.Section("noise", noise, "IMU noise model");
+    v.Section("vibration", vibration, "platform vibration sensed by the IMU (docs/imu-models.md)");
   }
 };
 
@@ -159,7 +240,9 @@ struct SimOptions {
 
   template <class V>
   void Visit(V& v) {
-    v.Field("duration_s", duration_s, "simulated duration [s]", config::Bounds::Positive());
+    v.Field("duration_s", duration_s,
+            "simulated duration [s]; 0: to the end of the trajectory (types waypoints and recording)",
+            config::Bounds::NonNegative());
     v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity g_W = (0, 0, -g) [m/s^2]",
             config::Bounds::Positive());
     v.Section("trajectory", trajectory, "body motion");
@@ -173,10 +256,15 @@ struct SimOptions {
   }
 };
 
-// Makes a relative trajectory.waypoints_file and imu.recording absolute, relative to `base_dir` (the config file's directory
-// for paths read from a file, the working directory for --set values), so a written config.yaml works from
-// anywhere. Empty and absolute paths are left alone.
+// Makes a relative trajectory.waypoints_file, trajectory.recording or imu.recording absolute, relative to
+// `base_dir` (the config file's directory for paths read from a file, the working directory for --set values),
+// so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
+
+// duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the
+// recording (reading only their timestamps). Other values, and trajectories without an end, are left alone
+// (ValidateSimOptions then refuses 0). Throws InputError "trajectory.<key>: file:line: reason".
+void ResolveDurationToEnd(SimOptions* options);
 
 // Longest recording the simulator accepts (it is held in memory): 1e7 IMU samples, 14 h at 200 Hz.
 inline constexpr double kMaxImuSamples = 1e7;

@@ -2,10 +2,32 @@
 
 #include "core/error.h"
 #include "sim/ellipse_trajectory.h"
+#include "sim/recorded_trajectory.h"
 #include "sim/rescue_trajectory.h"
 #include "sim/waypoint_trajectory.h"
 
 namespace vigil::sim {
+
+void ResolveDurationToEnd(SimOptions* options) {
+  if (options->duration_s != 0.0) return;
+  const TrajectoryOptions& t = options->trajectory;
+  try {
+    if (t.type == TrajectoryType::kWaypoints && !t.waypoints_file.empty()) {
+      const std::vector<Waypoint> w = ReadWaypoints(t.waypoints_file);
+      options->duration_s = w.back().t_s - w.front().t_s;
+    }
+  } catch (const InputError& e) {
+    throw InputError(std::string("trajectory.waypoints_file: ") + e.what());
+  }
+  try {
+    if (t.type == TrajectoryType::kRecording && !t.recording.empty()) {
+      const std::vector<TimedPose> poses = ReadRecordedPoses(t.recording);
+      options->duration_s = static_cast<double>(poses.back().t_ns - poses.front().t_ns) / 1e9;
+    }
+  } catch (const InputError& e) {
+    throw InputError(std::string("trajectory.recording: ") + e.what());
+  }
+}
 
 std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& options) {
   switch (options.type) {
@@ -20,6 +42,14 @@ std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& op
         return std::make_unique<WaypointTrajectory>(ReadWaypoints(options.waypoints_file));
       } catch (const InputError& e) {
         throw InputError(std::string("trajectory.waypoints_file: ") + e.what());
+      }
+    case TrajectoryType::kRecording:
+      if (options.recording.empty())
+        throw InputError("trajectory.recording: required for trajectory.type recording");
+      try {
+        return std::make_unique<RecordedTrajectory>(ReadRecordedPoses(options.recording), options.spline);
+      } catch (const InputError& e) {
+        throw InputError(std::string("trajectory.recording: ") + e.what());
       }
   }
   throw InputError("trajectory.type: unknown motion model");
