@@ -25,7 +25,7 @@ using testing::InputErrorOf;
 using testing::TempDir;
 
 // Three seconds of EuRoC V1_01 (real IMU, ground truth and camera times; README.md beside it).
-const fs::path kExcerpt = fs::path(VIGIL_SOURCE_DIR) / "tests/sim/data/v1_01_excerpt";
+const fs::path kSemiRealExcerpt = fs::path(VIGIL_SOURCE_DIR) / "tests/sim/data/v1_01_excerpt";
 // The shared recording, beside the repository (absent: those tests are skipped).
 const fs::path kV101 = fs::path(VIGIL_SOURCE_DIR) / "../shared/data/euroc_v1_01";
 
@@ -75,15 +75,15 @@ void ExpectTracksFollowGroundTruth(const Dataset& d) {
 }
 
 TEST(SemiReal, KeepsTheRecordedImuAndGroundTruthAndTheRecordedFrameTimes) {
-  const Dataset recorded = ReadDataset(kExcerpt);
-  const Dataset d = Simulate(SemiReal(kExcerpt, 3.0), 1);
+  const Dataset recorded = ReadDataset(kSemiRealExcerpt);
+  const Dataset d = Simulate(SemiReal(kSemiRealExcerpt, 3.0), 1);
   ExpectSameImu(d.imu_clean, recorded.imu);
   ExpectSameImu(d.imu, recorded.imu);
   ASSERT_EQ(d.groundtruth.size(), recorded.groundtruth.size());
   for (std::size_t k = 0; k < d.groundtruth.size(); ++k)
     EXPECT_EQ(d.groundtruth[k].p_W, recorded.groundtruth[k].p_W);
   // The frames are frames.csv's: real times (50 ms +- 128 ns apart), one of them dropped, none added.
-  const std::vector<int64_t> listed = ReadFramesCsv((kExcerpt / dataset_files::kFrames).string());
+  const std::vector<int64_t> listed = ReadFramesCsv((kSemiRealExcerpt / dataset_files::kFrames).string());
   EXPECT_EQ(TimesOf(d.frames), listed);
   EXPECT_EQ(listed.size(), 60u);
   int off_grid = 0;
@@ -95,11 +95,11 @@ TEST(SemiReal, KeepsTheRecordedImuAndGroundTruthAndTheRecordedFrameTimes) {
 }
 
 TEST(SemiReal, ReadingTheDatasetKeepsItsFramesWithoutPadding) {
-  const Dataset recorded = ReadDataset(kExcerpt);
-  EXPECT_EQ(TimesOf(recorded.frames), ReadFramesCsv((kExcerpt / dataset_files::kFrames).string()));
+  const Dataset recorded = ReadDataset(kSemiRealExcerpt);
+  EXPECT_EQ(TimesOf(recorded.frames), ReadFramesCsv((kSemiRealExcerpt / dataset_files::kFrames).string()));
   for (const CameraFrame& f : recorded.frames) EXPECT_TRUE(f.features.empty());
   TempDir tmp;
-  SimOptions o = SemiReal(kExcerpt, 3.0);
+  SimOptions o = SemiReal(kSemiRealExcerpt, 3.0);
   o.camera.pixel_noise_px = 0.5;
   const Dataset d = Simulate(o, 2);
   WriteDataset(tmp.path(), d);
@@ -112,13 +112,13 @@ TEST(SemiReal, ReadingTheDatasetKeepsItsFramesWithoutPadding) {
 }
 
 TEST(SemiReal, GlitchesAndFaultsActOnTheRecordedImuWithLabels) {
-  SimOptions o = SemiReal(kExcerpt, 3.0);
+  SimOptions o = SemiReal(kSemiRealExcerpt, 3.0);
   o.glitch.enabled = true;
   o.glitch.rate = 0.05;
   o.glitch.mean = 5.0;
   o.glitch.axes = {ImuAxis::kAz, ImuAxis::kWx};
   const Dataset d = Simulate(o, 3);
-  ExpectSameImu(d.imu_clean, ReadDataset(kExcerpt).imu);
+  ExpectSameImu(d.imu_clean, ReadDataset(kSemiRealExcerpt).imu);
   ASSERT_GT(d.glitches.size(), 20u);
   std::size_t k = 0;
   for (const GlitchRecord& g : d.glitches) {
@@ -139,10 +139,10 @@ TEST(SemiReal, RecordingsThatDoNotCoverTheWindowAreRefusedWithFileAndLine) {
   const fs::path dir = tmp.path() / "rec";
   fs::create_directories(dir);
   for (const char* f : {"groundtruth.csv", "camera.yaml", "frames.csv", "features.csv", "landmarks.csv"})
-    fs::copy_file(kExcerpt / f, dir / f);
-  ImuStream imu = ReadDataset(kExcerpt).imu;
+    fs::copy_file(kSemiRealExcerpt / f, dir / f);
+  ImuStream imu = ReadDataset(kSemiRealExcerpt).imu;
   imu.resize(imu.size() - 5);  // ends 25 ms before the ground truth
-  const std::vector<int64_t> frames = ReadFramesCsv((kExcerpt / dataset_files::kFrames).string());
+  const std::vector<int64_t> frames = ReadFramesCsv((kSemiRealExcerpt / dataset_files::kFrames).string());
   // frames.csv's last time is now outside the IMU: the dataset itself is refused.
   WriteFileAtomic(dir / "imu.csv", ImuCsv(imu));
   EXPECT_NE(InputErrorOf([&] {
@@ -161,7 +161,7 @@ TEST(SemiReal, RecordingsThatDoNotCoverTheWindowAreRefusedWithFileAndLine) {
       << error;
   // A window beyond the ground truth.
   EXPECT_EQ(InputErrorOf([&] {
-              Simulate(SemiReal(kExcerpt, 3.5), 1);
+              Simulate(SemiReal(kSemiRealExcerpt, 3.5), 1);
             }).rfind("duration_s: the semi-real window", 0),
             0u);
 }
@@ -169,7 +169,7 @@ TEST(SemiReal, RecordingsThatDoNotCoverTheWindowAreRefusedWithFileAndLine) {
 // A EuRoC folder (mav0/) of the excerpt, with cam0/data.csv listing `image_times` (empty image files).
 fs::path WriteEurocExcerpt(const fs::path& dir, const std::vector<int64_t>& image_times,
                            const std::vector<NavState>& groundtruth) {
-  Dataset d = ReadDataset(kExcerpt);
+  Dataset d = ReadDataset(kSemiRealExcerpt);
   d.groundtruth = groundtruth;
   WriteEuroc(dir, d, EurocImuSensor{}, image_times);
   for (int64_t t : image_times) WriteFileAtomic(EurocImageDir(dir) / EurocImageName(t), "");
@@ -178,7 +178,7 @@ fs::path WriteEurocExcerpt(const fs::path& dir, const std::vector<int64_t>& imag
 
 TEST(SemiReal, CameraTimesOutsideTheImuAreRefusedWithFileAndLine) {
   TempDir tmp;
-  const Dataset excerpt = ReadDataset(kExcerpt);
+  const Dataset excerpt = ReadDataset(kSemiRealExcerpt);
   const int64_t after = excerpt.imu.back().t_ns + 1'000'000;
   const fs::path dir =
       WriteEurocExcerpt(tmp.path() / "rec", {excerpt.groundtruth[0].t_ns, after}, excerpt.groundtruth);
@@ -191,7 +191,7 @@ TEST(SemiReal, CameraTimesOutsideTheImuAreRefusedWithFileAndLine) {
 
 TEST(SemiReal, FrameTimesAreTheRecordedOnesThenTheGroundTruthsOrTheCameraRate) {
   TempDir tmp;
-  const Dataset excerpt = ReadDataset(kExcerpt);
+  const Dataset excerpt = ReadDataset(kSemiRealExcerpt);
   std::vector<int64_t> listed;
   for (int k = 0; k < 10; ++k) listed.push_back(excerpt.groundtruth[static_cast<std::size_t>(k)].t_ns);
   // Ground truth at the camera times: the listed frames, then the ground truth's own times.
@@ -218,7 +218,7 @@ TEST(SemiReal, FrameTimesAreTheRecordedOnesThenTheGroundTruthsOrTheCameraRate) {
 // The estimator on the excerpt's real times (a dropped frame included), seeded from ground truth.
 TEST(SemiReal, TheEstimatorRunsOnRecordedTimes) {
   experiments::RunConfig config;
-  config.sim = SemiReal(kExcerpt, 3.0);
+  config.sim = SemiReal(kSemiRealExcerpt, 3.0);
   config.sim.camera.pixel_noise_px = 0.5;
   config.estimator.init = estimator::InitMode::kGroundTruth;
   const Dataset d = Simulate(config.sim, 1);
