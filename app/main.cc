@@ -25,6 +25,16 @@ std::map<const CLI::App*, Action>& Actions() {
 void QuietSolverWarnings() {
   if (std::getenv("GLOG_minloglevel") == nullptr) FLAGS_minloglevel = google::GLOG_ERROR;
 }
+
+// glog, initialized once, so that its first message does not come with "WARNING: Logging before
+// InitGoogleLogging() is written to STDERR". Messages go to stderr only (no log files in /tmp) unless the
+// environment asks for files (GLOG_log_dir or GLOG_logtostderr).
+void InitLogging(const char* argv0) {
+  if (std::getenv("GLOG_log_dir") == nullptr && std::getenv("GLOG_logtostderr") == nullptr)
+    FLAGS_logtostderr = true;
+  google::InitGoogleLogging(argv0);
+  QuietSolverWarnings();
+}
 }  // namespace
 
 void SetAction(CLI::App* cmd, Action action) { Actions()[cmd] = std::move(action); }
@@ -55,7 +65,7 @@ std::vector<std::string> ConfigArgs::AllOverrides() const {
 
 int main(int argc, char** argv) {
   using namespace vigil::app;
-  QuietSolverWarnings();
+  InitLogging(argc > 0 ? argv[0] : "vigil");
   CLI::App root{"vigil: a laboratory for visual-inertial odometry under IMU faults"};
   root.require_subcommand(1);
   root.set_version_flag("--version", "vigil 0.1.0");

@@ -266,23 +266,32 @@ std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file, const std::vector
   if (checks && checks->landmarks)
     for (const Landmark& l : *checks->landmarks) known_ids.insert(l.id);
   const CameraModel* camera = checks ? checks->camera : nullptr;
+  const bool listed_times = checks && checks->listed_times;
   const double margin_px = camera ? 10.0 * camera->pixel_noise_px + 1.0 : 0.0;
   std::vector<CameraFrame> frames;
   std::size_t next_time = 0;
   auto add_empty_until = [&](int64_t t_ns) {  // frames without observations, before t_ns
     while (next_time < frame_times_ns.size() && frame_times_ns[next_time] < t_ns)
       frames.push_back({frame_times_ns[next_time++], {}});
-    if (next_time < frame_times_ns.size() && frame_times_ns[next_time] == t_ns) ++next_time;
+    if (next_time < frame_times_ns.size() && frame_times_ns[next_time] == t_ns) return true;
+    return false;
   };
   int64_t last = INT64_MIN;
   while (r.Next()) {
     const int64_t t_ns = r.Int(0);
     CheckIncreasing(r, t_ns, &last, /*allow_equal=*/true);
     if (!frame_times_ns.empty() && (t_ns < frame_times_ns.front() || t_ns > frame_times_ns.back()))
-      r.Fail("timestamp " + std::to_string(t_ns) + " is outside the camera frames of the IMU time span (" +
+      r.Fail("timestamp " + std::to_string(t_ns) + " is outside the camera frames (" +
              std::to_string(frame_times_ns.front()) + " .. " + std::to_string(frame_times_ns.back()) + ")");
+    if (checks && (t_ns < checks->min_t_ns || t_ns > checks->max_t_ns))
+      r.Fail("timestamp " + std::to_string(t_ns) + " is outside the IMU's time span (" +
+             std::to_string(checks->min_t_ns) + " .. " + std::to_string(checks->max_t_ns) + ")");
     if (frames.empty() || frames.back().t_ns != t_ns) {
-      add_empty_until(t_ns);
+      const bool listed = add_empty_until(t_ns);
+      if (listed) ++next_time;
+      if (listed_times && !listed)
+        r.Fail("timestamp " + std::to_string(t_ns) + " is not the time of a camera frame (" +
+               dataset_files::kFrames + ")");
       frames.push_back({t_ns, {}});
       frame_ids.clear();
     }
@@ -294,16 +303,42 @@ std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file, const std::vector
       r.Fail("id: " + std::to_string(o.id) + " is not a landmark of landmarks.csv");
     o.uv_px = Eigen::Vector2d(r.Double(2), r.Double(3));
     if (camera) {
-      const double u = o.uv_px.x(), v = o.uv_px.y();
-      if (u < -margin_px || v < -margin_px || u > camera->width + margin_px || v > camera->height + margin_px)
-        r.Fail("pixel (" + FormatDouble(u) + ", " + FormatDouble(v) + ") is outside the " +
+      // Tracks are undistorted pixels; with lens distortion, their image position is what must be seen.
+      const Eigen::Vector2d seen = camera->HasDistortion() ? camera->DistortPixel(o.uv_px) : o.uv_px;
+      const double u = seen.x(), v = seen.y();
+      if (!(u >= -margin_px && v >= -margin_px && u <= camera->width + margin_px &&
+            v <= camera->height + margin_px))
+        r.Fail("pixel (" + FormatDouble(o.uv_px.x()) + ", " + FormatDouble(o.uv_px.y()) + ") is outside the " +
                std::to_string(camera->width) + " x " + std::to_string(camera->height) +
-               " image (camera.yaml)");
+               " image (camera.yaml)" + (camera->HasDistortion() ? " once distorted" : ""));
     }
     frames.back().features.push_back(o);
   }
   add_empty_until(INT64_MAX);
   return frames;
+}
+
+std::string FramesCsv(const std::vector<CameraFrame>& frames, const std::string& file) {
+  CsvWriter w("timestamp [ns]", file);
+  for (const CameraFrame& f : frames) {
+    w << f.t_ns;
+    w.EndRow();
+  }
+  return w.Str();
+}
+
+std::vector<int64_t> ReadFramesCsv(const std::string& path) { return ReadFramesCsv(ReadTextFile(path)); }
+
+std::vector<int64_t> ReadFramesCsv(const TextFile& file) {
+  CsvReader r(file, 1, "timestamp [ns] of each camera frame");
+  std::vector<int64_t> times;
+  int64_t last = INT64_MIN;
+  while (r.Next()) {
+    const int64_t t_ns = r.Int(0);
+    CheckIncreasing(r, t_ns, &last);
+    times.push_back(t_ns);
+  }
+  return times;
 }
 
 std::string CameraYaml(const CameraModel& camera) {
@@ -341,6 +376,7 @@ void WriteDataset(const fs::path& dir, const Dataset& d, const fs::path& shown_d
   WriteFileAtomic(dir / kGroundTruth, GroundTruthCsv(d.groundtruth, shown(kGroundTruth)));
   WriteFileAtomic(dir / kLandmarks, LandmarksCsv(d.landmarks, shown(kLandmarks)));
   WriteFileAtomic(dir / kFeatures, FeaturesCsv(d.frames, shown(kFeatures)));
+  WriteFileAtomic(dir / kFrames, FramesCsv(d.frames, shown(kFrames)));
   WriteFileAtomic(dir / kCamera, CameraYaml(d.camera));
 }
 
@@ -357,17 +393,24 @@ Dataset ReadDataset(const fs::path& dir) {
   d.groundtruth = ReadGroundTruthCsv((dir / kGroundTruth).string());
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());
   d.camera = ReadCameraYaml((dir / kCamera).string());
-  // Camera frame times: every 1/rate_hz from the first IMU sample, within the IMU time span.
-  const double span_s = NsToS(d.imu.back().t_ns - d.imu.front().t_ns);
-  if (span_s * d.camera.rate_hz > kMaxCameraFrames)
-    throw InputError((dir / kCamera).string() + ": rate_hz: " + FormatDouble(d.camera.rate_hz) +
-                     " Hz over the " + FormatDouble(span_s) + " s of imu.csv gives more than " +
-                     std::to_string(static_cast<long long>(kMaxCameraFrames)) + " camera frames");
-  const std::vector<int64_t> frame_times =
-      CameraFrameTimes(d.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns);
+  // Camera frames at their recorded times: frames.csv (never reconstructed from camera.yaml's rate).
+  std::vector<int64_t> frame_times;
   FeatureChecks checks;
   checks.camera = &d.camera;
   checks.landmarks = &d.landmarks;
+  checks.min_t_ns = d.imu.front().t_ns;
+  checks.max_t_ns = d.imu.back().t_ns;
+  if (fs::exists(dir / kFrames)) {
+    const TextFile frames = ReadTextFile((dir / kFrames).string());
+    frame_times = ReadFramesCsv(frames);
+    for (std::size_t k = 0; k < frame_times.size(); ++k)
+      if (frame_times[k] < checks.min_t_ns || frame_times[k] > checks.max_t_ns)
+        throw InputError(Located(frames.path, static_cast<int>(k) + 2,
+                                 "timestamp " + std::to_string(frame_times[k]) +
+                                     " is outside the IMU's time span (" + std::to_string(checks.min_t_ns) +
+                                     " .. " + std::to_string(checks.max_t_ns) + ", imu.csv)"));
+    checks.listed_times = true;
+  }
   d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times, &checks);
   return d;
 }

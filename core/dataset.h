@@ -4,6 +4,7 @@
 // reads (column count, finite numbers, strictly increasing timestamps) and reports "file:line: reason".
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ inline constexpr const char* kGroundTruth = "groundtruth.csv";
 inline constexpr const char* kLandmarks = "landmarks.csv";
 inline constexpr const char* kFeatures = "features.csv";
 inline constexpr const char* kCamera = "camera.yaml";
+inline constexpr const char* kFrames = "frames.csv";  // every camera frame's time, features or not
 }  // namespace dataset_files
 
 // The records of kind offset (the glitches a detector is scored on: the paper's fault); saturation and timing
@@ -46,14 +48,17 @@ inline constexpr double kMaxAbsCoordinate_m = 1e6;     // positions (ground trut
 inline constexpr double kMaxAbsImuValue = 1e6;         // any gyroscope [rad/s] or accelerometer [m/s^2] axis
 inline constexpr int64_t kMaxImuGap_ns = 1000000000;   // between consecutive IMU samples (1 s)
 inline constexpr double kMaxAbsGroundTruthRate = 1e6;  // velocity [m/s] and bias components
-inline constexpr double kMaxCameraFrames = 1e7;        // camera.yaml rate_hz x the IMU time span
 
 // What a features.csv is checked against when its dataset is known (ReadDataset): ids of landmarks.csv,
-// pixels inside the image (with a margin of 10 x the pixel noise + 1 px), one observation per id and frame,
-// times within the camera frames of the IMU's time span.
+// pixels inside the image (with a margin of 10 x the pixel noise + 1 px; for a camera with lens distortion,
+// the pixel's distorted image position), one observation per id and frame, times within the camera frames
+// (with `listed_times`: each time one of the frames listed).
 struct FeatureChecks {
   const CameraModel* camera = nullptr;
   const std::vector<Landmark>* landmarks = nullptr;
+  bool listed_times = false;
+  int64_t min_t_ns = INT64_MIN;  // the IMU's time span: every feature time lies within it
+  int64_t max_t_ns = INT64_MAX;
 };
 
 // Serialization of each file (the text is what is written; reading parses a path). `file` names the file in
@@ -69,6 +74,11 @@ std::string LandmarksCsv(const std::vector<Landmark>& landmarks,
 std::string FeaturesCsv(const std::vector<CameraFrame>& frames,
                         const std::string& file = dataset_files::kFeatures);
 std::string CameraYaml(const CameraModel& camera);
+// frames.csv: "#timestamp [ns]", one row per camera frame (frames without features included), so that a
+// reader gets the recording's frames at their own times, never reconstructed from a rate.
+std::string FramesCsv(const std::vector<CameraFrame>& frames, const std::string& file = dataset_files::kFrames);
+std::vector<int64_t> ReadFramesCsv(const std::string& path);
+std::vector<int64_t> ReadFramesCsv(const TextFile& file);
 
 // Every reader takes a path (a regular file, core/output.h) or a file already in memory (the fuzz targets).
 ImuStream ReadImuCsv(const std::string& path);
@@ -84,7 +94,8 @@ std::vector<Landmark> ReadLandmarksCsv(const TextFile& file);
 void CheckCleanImuMatches(const ImuStream& imu, const ImuStream& clean, const std::string& imu_path,
                           const std::string& clean_path);
 // Groups rows by timestamp. Camera frames with no visible feature do not appear in the file; pass the
-// camera rate's frame times in `frame_times_ns` to get them back as empty frames (or leave it empty).
+// recording's frame times in `frame_times_ns` (frames.csv, a EuRoC cam0/data.csv) to get them back as empty
+// frames (or leave it empty: the frames are the file's timestamps).
 // Ids must be >= 0 and distinct per frame; with `checks`, also the checks of FeatureChecks.
 std::vector<CameraFrame> ReadFeaturesCsv(const std::string& path,
                                          const std::vector<int64_t>& frame_times_ns = {},
@@ -94,8 +105,9 @@ std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file,
                                          const FeatureChecks* checks = nullptr);
 CameraModel ReadCameraYaml(const std::string& path);
 
-// Camera frame times of a recording: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while
-// t_k <= t_last_ns. The simulator takes its frames at these times and ReadDataset reconstructs them this way.
+// Camera frame times on a grid: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while
+// t_k <= t_last_ns. The simulator takes its frames at these times (before camera timing faults); readers never
+// reconstruct frames from a rate (frames.csv lists them).
 std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_t t_last_ns);
 
 // Writes every file except config.yaml into `dir` (which must exist); errors name the files as inside
@@ -103,8 +115,9 @@ std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_
 void WriteDataset(const std::filesystem::path& dir, const Dataset& dataset,
                   const std::filesystem::path& shown_dir = {});
 // Reads a dataset directory; imu_clean.csv and glitches.csv are optional (left empty when absent). Ground
-// truth needs at least 2 rows; camera.yaml's rate over the IMU time span gives at most kMaxCameraFrames
-// frames.
+// truth needs at least 2 rows. The camera frames are those of frames.csv at their own times (features.csv
+// timestamps must be among them; frames without features come back empty); without frames.csv (datasets
+// written before it), the timestamps of features.csv. Frame times must lie within the IMU's time span.
 Dataset ReadDataset(const std::filesystem::path& dir);
 
 // rpg / TUM trajectory text: "# timestamp tx ty tz qx qy qz qw", seconds with 9 decimals.

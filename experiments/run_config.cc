@@ -59,6 +59,11 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
 
 void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   sim::ValidateSimOptions(config.sim, origin);
+  if (config.sim.imu.source == sim::ImuSource::kRecording &&
+      config.frontend.features == frontend::FeatureSource::kTracked)
+    throw InputError(origin +
+                     ": frontend.features: tracked needs rendered images along a simulated trajectory, not "
+                     "a semi-real dataset (imu.source recording)");
   if (const std::string why = frontend::ValidateEvaluationOptions(config.frontend.evaluation); !why.empty())
     throw InputError(origin + ": frontend.evaluation." + why);
   try {
@@ -98,7 +103,7 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
   for (const std::string& file : {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
-                                  config.detector.dtw.templates_file})
+                                  config.detector.dtw.templates_file, config.sim.imu.recording})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }

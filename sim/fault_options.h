@@ -97,11 +97,29 @@ struct TimingFaultOptions {
   }
 };
 
+// Irregular camera frames (sim/camera_timing.h): frames taken off the nominal rate's grid, and lost frames.
+// The first and the last frame are never affected.
+struct CameraTimingOptions {
+  double drop_rate = 0.0;     // probability per frame that it is lost
+  double jitter_std_s = 0.0;  // std of a Gaussian error of each frame's time, clipped to +-0.45 periods [s]
+
+  template <class V>
+  void Visit(V& v) {
+    using config::Bounds;
+    v.Field("drop_rate", drop_rate, "probability per camera frame that it is lost", Bounds::Probability());
+    v.Field("jitter_std_s", jitter_std_s,
+            "std of the Gaussian error of each camera frame's time (the tracks are seen at the jittered "
+            "time), clipped to +-0.45 camera periods [s]",
+            Bounds::NonNegative());
+  }
+};
+
 struct FaultOptions {
   ScaleMisalignmentOptions scale;
   SaturationOptions saturation;
   QuantizationOptions quantization;
   TimingFaultOptions timing;
+  CameraTimingOptions camera;
 
   template <class V>
   void Visit(V& v) {
@@ -109,6 +127,7 @@ struct FaultOptions {
     v.Section("saturation", saturation, "clipping at the sensor's full-scale range");
     v.Section("quantization", quantization, "rounding to the sensor's resolution");
     v.Section("timing", timing, "dropped samples, duplicated and jittered timestamps");
+    v.Section("camera", camera, "irregular camera frames: jittered frame times and dropped frames");
   }
 };
 

@@ -5,7 +5,8 @@
 namespace vigil::sim {
 
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options) {
-  for (std::string* file : {&options->trajectory.waypoints_file, &options->trajectory.recording}) {
+  for (std::string* file :
+       {&options->trajectory.waypoints_file, &options->trajectory.recording, &options->imu.recording}) {
     if (file->empty() || std::filesystem::path(*file).is_absolute()) continue;
     *file = std::filesystem::absolute(base_dir / *file).lexically_normal().string();
   }
@@ -39,6 +40,11 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
   if (options.landmarks.layout != LandmarkLayout::kHouse && options.landmarks.random_count <= 0)
     throw InputError(origin +
                      ": landmarks.random_count: must be > 0 for the layouts random and house+random");
+  if (options.imu.source == ImuSource::kRecording && options.imu.recording.empty())
+    throw InputError(origin + ": imu.recording: required for imu.source recording");
+  if (options.imu.source == ImuSource::kRecording && options.images.enabled)
+    throw InputError(origin +
+                     ": images.enabled: rendered images need a simulated trajectory (imu.source simulated)");
   if (options.trajectory.type == TrajectoryType::kWaypoints && options.trajectory.waypoints_file.empty())
     throw InputError(origin + ": trajectory.waypoints_file: required for trajectory.type waypoints");
   if (options.trajectory.type == TrajectoryType::kRecording && options.trajectory.recording.empty())

@@ -127,6 +127,8 @@ struct ImuNoiseOptions {
   }
 };
 
+enum class ImuSource { kSimulated, kRecording };
+
 // Vibration of the platform (rotors, a track, an engine) as the IMU senses it: band-limited, zero-mean, on
 // every axis (sim/vibration.h). Off while frequency_hz is 0 or both amplitudes are 0.
 struct ImuVibrationOptions {
@@ -162,6 +164,9 @@ struct ImuVibrationOptions {
 enum class ImuPreset { kNone, kAdis16448, kBmi088, kMpu6050 };
 
 struct ImuOptions {
+  ImuSource source = ImuSource::kSimulated;
+  std::string recording;             // for source recording: a EuRoC folder (sim/semi_real.h)
+  double recording_start_s = 0.0;    // semi-real window start, from the recording's first ground-truth row
   double rate_hz = 200.0;
   ImuPreset preset = ImuPreset::kNone;
   ImuNoiseOptions noise;
@@ -169,6 +174,18 @@ struct ImuOptions {
 
   template <class V>
   void Visit(V& v) {
+    v.Enum("source", source,
+           config::EnumNames<ImuSource>{{"simulated", ImuSource::kSimulated},
+                                        {"recording", ImuSource::kRecording}},
+           "simulated: synthesized along trajectory.*; recording: the recorded IMU of imu.recording, with "
+           "camera tracks synthesized along its ground truth (a semi-real dataset, docs/recordings.md)");
+    v.Field("recording", recording,
+            "recording for source recording: a EuRoC folder (holding mav0/, or mav0/ itself) or a vigil "
+            "dataset, with ground truth and a camera (relative to the config file)");
+    v.Field("recording_start_s", recording_start_s,
+            "source recording: start of the semi-real window after the first ground-truth row [s]; the "
+            "window lasts duration_s",
+            config::Bounds::NonNegative());
     v.Field("rate_hz", rate_hz, "IMU sampling rate [Hz]", config::Bounds::Positive());
     v.Enum("preset", preset,
            config::EnumNames<ImuPreset>{{"none", ImuPreset::kNone},
@@ -239,9 +256,9 @@ struct SimOptions {
   }
 };
 
-// Makes a relative trajectory.waypoints_file or trajectory.recording absolute, relative to `base_dir` (the
-// config file's directory for paths read from a file, the working directory for --set values), so a written
-// config.yaml works from anywhere. Empty and absolute paths are left alone.
+// Makes a relative trajectory.waypoints_file, trajectory.recording or imu.recording absolute, relative to
+// `base_dir` (the config file's directory for paths read from a file, the working directory for --set values),
+// so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
 // duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the

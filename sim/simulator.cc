@@ -9,6 +9,7 @@
 #include "core/mesh.h"
 #include "core/output.h"
 #include "sim/camera_simulator.h"
+#include "sim/camera_timing.h"
 #include "sim/glitch_injector.h"
 #include "sim/image_renderer.h"
 #include "sim/imu_faults.h"
@@ -16,6 +17,7 @@
 #include "sim/landmarks.h"
 #include "sim/scale_misalignment.h"
 #include "sim/scene.h"
+#include "sim/semi_real.h"
 #include "sim/trajectory_model.h"
 
 namespace vigil::sim {
@@ -46,6 +48,11 @@ Scene ScenarioScene(const SimOptions& options, const TrajectoryModel& motion) {
 }
 
 ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
+  if (options.imu.source == ImuSource::kRecording) {
+    ValidateSimOptions(options, "simulator options");
+    Dataset d = SimulateSemiReal(options, seed);
+    return {std::move(d.imu_clean), std::move(d.groundtruth)};
+  }
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
   ImuSynthesis out = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
   ApplyScaleMisalignment(options.faults.scale, &out.imu);
@@ -55,6 +62,10 @@ ImuSynthesis SimulateImu(const SimOptions& options, uint64_t seed) {
 }
 
 Dataset Simulate(const SimOptions& options, uint64_t seed) {
+  if (options.imu.source == ImuSource::kRecording) {
+    ValidateSimOptions(options, "simulator options");
+    return SimulateSemiReal(options, seed);
+  }
   const std::unique_ptr<TrajectoryModel> motion = CheckedMotion(options);
   Dataset d;
   ImuSynthesis imu = SynthesizeImu(*motion, options.imu, options.duration_s, options.gravity_mps2, seed);
@@ -66,8 +77,10 @@ Dataset Simulate(const SimOptions& options, uint64_t seed) {
   ApplyMeasurementFaults(options, seed, &d.imu, &d.imu_clean, &d.glitches);
   d.landmarks = MakeLandmarks(options.landmarks, SamplePath(*motion, options.duration_s), seed);
   d.camera = options.camera;
-  d.frames = SimulateFeatureTracks(*motion, options.camera, d.landmarks, d.imu.front().t_ns,
-                                   d.imu.back().t_ns, seed);
+  const std::vector<int64_t> frame_times =
+      ApplyCameraTiming(options.faults.camera, options.camera.rate_hz, seed,
+                        CameraFrameTimes(options.camera.rate_hz, d.imu.front().t_ns, d.imu.back().t_ns));
+  d.frames = SimulateFeatureTracksAt(*motion, options.camera, d.landmarks, frame_times, seed);
   return d;
 }
 

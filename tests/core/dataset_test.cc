@@ -96,6 +96,37 @@ TEST(Dataset, FeatureValuesAreChecked) {
             std::string::npos);
 }
 
+// Frames come from frames.csv at their own times (jittered, with a dropped one: nothing on a grid), never
+// reconstructed from camera.yaml's rate; without frames.csv, the frames are features.csv's timestamps.
+TEST(Dataset, FramesAreReadAtTheirRecordedTimesAndNeverPadded) {
+  TempDir tmp;
+  Dataset d = SmallDataset();
+  d.frames = {{0, {{0, {10, 20}}}}, {24'999'872, {}}, {75'000'128, {{1, {30, 40}}}}, {99'000'000, {}}};
+  WriteDataset(tmp.path(), d);
+  Dataset back = ReadDataset(tmp.path());
+  ASSERT_EQ(back.frames.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(back.frames[k].t_ns, d.frames[k].t_ns);
+  EXPECT_TRUE(back.frames[3].features.empty());
+  std::filesystem::remove(tmp.path() / "frames.csv");
+  back = ReadDataset(tmp.path());
+  ASSERT_EQ(back.frames.size(), 2u);
+  EXPECT_EQ(back.frames[1].t_ns, 75'000'128);
+}
+
+TEST(Dataset, FrameTimesAreChecked) {
+  TempDir tmp;
+  const std::string header = "#timestamp [ns],id,u [px],v [px]\n";
+  EXPECT_NE(ReadError(tmp, "features.csv", header + "25000001,0,10,20\n")
+                .find("features.csv:2: timestamp 25000001 is not the time of a camera frame (frames.csv)"),
+            std::string::npos);
+  EXPECT_NE(ReadError(tmp, "frames.csv", "#timestamp [ns]\n0\n100000001\n")
+                .find("frames.csv:3: timestamp 100000001 is outside the IMU's time span (0 .. 100000000"),
+            std::string::npos);
+  EXPECT_NE(
+      ReadError(tmp, "frames.csv", "#timestamp [ns]\n0\n0\n").find("frames.csv:3: timestamp 0 does not"),
+      std::string::npos);
+}
+
 TEST(Dataset, GroundTruthValuesAreChecked) {
   TempDir tmp;
   Dataset d = SmallDataset();
