@@ -76,7 +76,8 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
-  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.detector.dtw.templates_file})
+  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.detector.dtw.templates_file,
+                                  config.detector.calibration_dataset})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }
