@@ -65,7 +65,7 @@ struct EstimatorResult {
   // never NaN/Inf. Trajectory rows are the same poses.
   std::vector<NavState> states;
   Trajectory trajectory;
-  double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // time of the first successful init
+  double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // first successful init, s after the first IMU sample
   int resets = 0;                    // failure-detection resets (each followed by re-initialization)
   int frames = 0;                    // camera frames processed
   int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)

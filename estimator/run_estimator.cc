@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "estimator/estimator.h"
+#include "estimator/init_diagnosis.h"
 #include "estimator/imu_interval.h"
 #include "estimator/imu_trust.h"
 #include "estimator/make_initializer.h"
@@ -93,9 +94,14 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   }
   if (result.ok && result.states.empty()) {
     result.ok = false;
-    result.failure_reason = "the estimator never initialized";
+    result.failure_reason =
+        "the estimator never initialized: " +
+        DiagnoseNoInitialization(options, MeasureInitEvidence(input, imu), estimator.window_frames(),
+                                 estimator.init_failure_reason());
   }
-  if (estimator.initialized_at_ns()) result.initialized_at_s = NsToS(*estimator.initialized_at_ns());
+  // From the start of the recording (its first IMU sample), not the recording's clock.
+  if (estimator.initialized_at_ns())
+    result.initialized_at_s = NsToS(*estimator.initialized_at_ns() - imu.front().t_ns);
   result.resets = estimator.resets();
   result.keyframes = estimator.keyframes();
   result.marginalization_failures = estimator.marginalization_failures();
