@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddInjectCommand(root);
   AddTrackCommand(root);
   AddRunCommand(root);
   AddEvalCommand(root);
