@@ -124,7 +124,7 @@ TEST_F(RecordingsCli, InjectIntoAEurocFolderLinksTheImages) {
   fs::copy(ds / "mav0", eu / "mav0", fs::copy_options::recursive);
   fs::copy_file(ds / "features.csv", eu / "features.csv");
   const CliResult r = Vigil(tmp_, "inject " + eu.string() + " -o " + injected.string() + " " + kGlitches +
-                                      " --set faults.timing.drop_rate=0.01");
+                                      " --set glitch.rate=0.05 --set faults.timing.drop_rate=0.05");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::is_symlink(injected / "mav0" / "cam0" / "data"));
   EXPECT_EQ(fs::canonical(injected / "mav0" / "cam0" / "data"), fs::canonical(eu / "mav0" / "cam0" / "data"));

@@ -46,7 +46,7 @@ EstimatorInput StationaryInput(double duration_s) {
 
 TEST(InitDiagnosis, AStationaryRecordingSaysThePlatformDidNotMove) {
   const EstimatorInput input = StationaryInput(4.0);
-  ASSERT_GT(input.frames.front().features.size(), 30u);
+  ASSERT_GT(input.frames.front().features.size(), 20u);  // more than vins.min_correspondences
   EstimatorOptions options;
   options.init = InitMode::kVins;
   const EstimatorResult result = RunEstimator(options, input);
@@ -68,7 +68,7 @@ TEST(InitDiagnosis, AMovingRecordingIsNotCalledStationary) {
   const Dataset data = sim::Simulate(options, 5);
   const EstimatorInput input = testing::InputFromSimulation(options, data, 5);
   const InitEvidence e = MeasureInitEvidence(input, input.imu);
-  EXPECT_GT(e.max_displacement_px, 10 * kStationaryDisplacement_px);
+  EXPECT_GT(e.max_displacement_px, 5 * kStationaryDisplacement_px);
   EXPECT_EQ(DiagnoseNoInitialization(EstimatorOptions{}, e, 11, "sfm: no reference frame (best: 3 shared)")
                 .rfind("not enough motion or parallax", 0),
             0u);
