@@ -361,7 +361,8 @@ std::string ImuSpan(const ImuStream& imu, const std::string& imu_path) {
 }  // namespace
 
 void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path,
-                               const std::vector<NavState>& groundtruth, const std::string& groundtruth_path) {
+                               const std::vector<NavState>& groundtruth,
+                               const std::string& groundtruth_path) {
   if (imu.empty() || groundtruth.empty()) return;
   if (groundtruth.front().t_ns < imu.front().t_ns - kSensorSpanTolerance_ns)
     throw InputError(Located(groundtruth_path, 2,
@@ -378,8 +379,8 @@ void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path,
   if (imu.empty()) return;
   if (t_ns < imu.front().t_ns - kSensorSpanTolerance_ns || t_ns > imu.back().t_ns + kSensorSpanTolerance_ns)
     throw InputError(Located(file, line,
-                             "timestamp " + std::to_string(t_ns) + ": camera frame outside the IMU's time span; " +
-                                 ImuSpan(imu, imu_path)));
+                             "timestamp " + std::to_string(t_ns) +
+                                 ": camera frame outside the IMU's time span; " + ImuSpan(imu, imu_path)));
 }
 
 Dataset ReadDataset(const fs::path& dir) {

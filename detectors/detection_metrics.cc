@@ -67,8 +67,8 @@ DetectionMetrics EvaluateDetection(const ImuStream& raw, const DetectionResult& 
                  ? static_cast<double>(m.detected_glitched_samples) / static_cast<double>(m.glitched_samples)
                  : 1.0;
   m.precision = m.flagged_samples > 0 ? static_cast<double>(m.detected_glitched_samples) /
-                                           static_cast<double>(m.flagged_samples)
-                                     : 1.0;
+                                            static_cast<double>(m.flagged_samples)
+                                      : 1.0;
   m.segment_precision = m.flagged_segments > 0
                             ? static_cast<double>(m.true_segments) / static_cast<double>(m.flagged_segments)
                             : 1.0;

@@ -12,8 +12,8 @@
 //               flags a whole DTW slice around one spike is one correct detection, not 39 false ones);
 //   segment_f1 = 2 segment_precision recall / (segment_precision + recall).
 // With no glitched sample recall is 1 (nothing to find); with no flagged sample both precisions are 1 (no
-// false alarm). imu_rmse_* = sqrt(mean over samples of |x - x_clean|^2), the norm over all six axes (rad/s and
-// m/s^2 mixed, as in imu.csv), before (raw) and after (cleaned) mitigation; 0 when imu_clean is empty.
+// false alarm). imu_rmse_* = sqrt(mean over samples of |x - x_clean|^2), the norm over all six axes (rad/s
+// and m/s^2 mixed, as in imu.csv), before (raw) and after (cleaned) mitigation; 0 when imu_clean is empty.
 #pragma once
 
 #include <cstdint>

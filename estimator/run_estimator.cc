@@ -8,9 +8,9 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "estimator/estimator.h"
-#include "estimator/init_diagnosis.h"
 #include "estimator/imu_interval.h"
 #include "estimator/imu_trust.h"
+#include "estimator/init_diagnosis.h"
 #include "estimator/make_initializer.h"
 
 namespace vigil::estimator {

@@ -4,8 +4,8 @@
 
 #include "core/config.h"
 #include "core/error.h"
-#include "core/reference_imu.h"
 #include "core/random.h"
+#include "core/reference_imu.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/threshold_detector.h"
 #include "sim/simulator.h"
@@ -50,19 +50,20 @@ std::optional<CalibrationReference> ResolveCalibrationReference(const RunConfig&
     return CalibrationReference{std::move(reference.imu), reference.file.string()};
   }
   if (with_clean)
-    return CalibrationReference{dataset.imu_clean,
-                                (recording_dir / dataset_files::kImuClean).string() + " (the recording's own)"};
+    return CalibrationReference{
+        dataset.imu_clean, (recording_dir / dataset_files::kImuClean).string() + " (the recording's own)"};
   const std::string dir = recording_dir.string();
   if (config.detector.type == detectors::DetectorType::kThreshold)
     throw InputError("detector.threshold.calibration: clean calibrates on glitch-free data, and " + dir +
                      " has no imu_clean.csv; set detector.calibration_dataset=CLEAN_DATASET, or "
                      "detector.threshold.calibration=manual and its lower/upper (`vigil templates "
                      "OTHER_DATASET` prints calibrated ones)");
-  throw InputError("detector.dtw.templates_file: the dtw detector needs a template library built from clean "
-                   "data, and " +
-                   dir +
-                   " has no imu_clean.csv; set detector.dtw.templates_file (`vigil templates OTHER_DATASET -o "
-                   "templates.yaml`) or detector.calibration_dataset=CLEAN_DATASET");
+  throw InputError(
+      "detector.dtw.templates_file: the dtw detector needs a template library built from clean "
+      "data, and " +
+      dir +
+      " has no imu_clean.csv; set detector.dtw.templates_file (`vigil templates OTHER_DATASET -o "
+      "templates.yaml`) or detector.calibration_dataset=CLEAN_DATASET");
 }
 
 std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConfig& config,
@@ -99,8 +100,8 @@ detectors::DetectorOptions ResolveDetectorOptions(const RunConfig& config,
 }
 
 DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
-                            const detectors::TemplateLibrary* templates, bool with_glitches,
-                            bool with_clean, const CalibrationReference* reference) {
+                            const detectors::TemplateLibrary* templates, bool with_glitches, bool with_clean,
+                            const CalibrationReference* reference) {
   DetectionStage stage;
   const bool calibrate = config.detector.type == detectors::DetectorType::kThreshold &&
                          config.detector.threshold.calibration == detectors::ThresholdCalibration::kClean;
@@ -116,10 +117,10 @@ DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
     stage.json["threshold_lower"] = options.threshold.lower;
     stage.json["threshold_upper"] = options.threshold.upper;
     stage.json["threshold_calibration"] =
-        !calibrate  ? std::string("manual")
-        : reference ? reference->source
-                    : "glitch-free simulation, seed DeriveSeed(" + std::to_string(config.seed) +
-                          ", \"calibration\")";
+        !calibrate ? std::string("manual")
+        : reference
+            ? reference->source
+            : "glitch-free simulation, seed DeriveSeed(" + std::to_string(config.seed) + ", \"calibration\")";
   }
   if (templates) {
     stage.json["dtw_threshold"] = detectors::EffectiveDtwThreshold(config.detector.dtw, *templates);
