@@ -112,8 +112,16 @@ void AddCleanCommand(CLI::App& root) {
                  args->detector.c_str(), static_cast<long long>(metrics.flagged_samples),
                  static_cast<long long>(metrics.samples), static_cast<long long>(metrics.flagged_segments));
     if (has_glitches)
-      std::fprintf(stderr, "; precision %.3f recall %.3f F1 %.3f", metrics.precision, metrics.recall,
-                   metrics.f1);
+      std::fprintf(stderr,
+                   "; per sample: precision %.3f recall %.3f F1 %.3f false positives %.3f %%; per segment: "
+                   "precision %.3f",
+                   metrics.precision, metrics.recall, metrics.f1, 100.0 * metrics.false_positive_rate,
+                   metrics.segment_precision);
+    else
+      std::fprintf(stderr, " (%.3f %%)",
+                   metrics.samples > 0 ? 100.0 * static_cast<double>(metrics.flagged_samples) /
+                                             static_cast<double>(metrics.samples)
+                                       : 0.0);
     if (has_clean)
       std::fprintf(stderr, "; IMU RMS vs clean %.4g -> %.4g", metrics.imu_rmse_raw, metrics.imu_rmse_cleaned);
     std::fprintf(stderr, "\n");

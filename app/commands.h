@@ -32,6 +32,7 @@ void AddConfigCommand(CLI::App& root);
 void AddSimulateCommand(CLI::App& root);
 void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
+void AddInjectCommand(CLI::App& root);
 void AddTrackCommand(CLI::App& root);
 void AddPlotCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);

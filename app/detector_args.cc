@@ -45,7 +45,11 @@ ImuInput ResolveImuInput(const std::string& dataset, const std::string& file_in_
     // A EuRoC folder (the one holding mav0/, or mav0/ itself): its imu0/data.csv.
     const fs::path mav0 = FindMav0(path);
     const fs::path euroc_imu = mav0 / euroc_files::kImu / euroc_files::kData;
-    if (!mav0.empty() && fs::exists(euroc_imu, ec)) return {euroc_imu, euroc_imu.parent_path()};
+    // imu_clean.csv and glitches.csv sit beside mav0/ (where vigil inject writes them, core/euroc.h).
+    if (!mav0.empty() && fs::exists(euroc_imu, ec)) {
+      const fs::path m = fs::absolute(mav0).lexically_normal();
+      return {euroc_imu, (m.has_filename() ? m : m.parent_path()).parent_path()};
+    }
     throw InputError(file.string() + ": not found (expected a dataset directory: vigil's, or a EuRoC folder with "
                      "mav0/imu0/data.csv)");
   }

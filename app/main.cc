@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   AddSimulateCommand(root);
   AddTemplatesCommand(root);
   AddCleanCommand(root);
+  AddInjectCommand(root);
   AddTrackCommand(root);
   AddRunCommand(root);
   AddEstimateCommand(root);

@@ -198,9 +198,8 @@ std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
   while (r.Next()) {
     NavState s;
     s.t_ns = r.Int(0);
-    // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
-    // keeps the first of them); a timestamp going backwards is an error.
-    CheckIncreasing(r, s.t_ns, &last, /*allow_equal=*/true);
+    // A ground truth is one pose per instant: a repeated or decreasing timestamp is an error.
+    CheckIncreasing(r, s.t_ns, &last);
     const auto rate = [&](std::size_t c) { return Bounded(r, c, kMaxAbsGroundTruthRate); };
     s.p_W = Eigen::Vector3d(Bounded(r, 1, kMaxAbsCoordinate_m), Bounded(r, 2, kMaxAbsCoordinate_m),
                             Bounded(r, 3, kMaxAbsCoordinate_m));
@@ -208,6 +207,14 @@ std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
     s.v_W = Eigen::Vector3d(rate(8), rate(9), rate(10));
     s.b_g = Eigen::Vector3d(rate(11), rate(12), rate(13));
     s.b_a = Eigen::Vector3d(rate(14), rate(15), rate(16));
+    if (!out.empty()) {
+      const double dt_s = NsToS(s.t_ns - out.back().t_ns);
+      const double step_m = (s.p_W - out.back().p_W).norm();
+      if (step_m > kMaxGroundTruthSpeed_mps * dt_s)
+        r.Fail("position jumps " + FormatDouble(step_m) + " m in " + FormatDouble(dt_s) + " s (" +
+               FormatDouble(step_m / dt_s) + " m/s, beyond " + FormatDouble(kMaxGroundTruthSpeed_mps) +
+               " m/s): a teleport no motion explains");
+    }
     out.push_back(s);
   }
   CheckNotEmpty(r, out.size());
@@ -380,6 +387,38 @@ void WriteDataset(const fs::path& dir, const Dataset& d, const fs::path& shown_d
   WriteFileAtomic(dir / kCamera, CameraYaml(d.camera));
 }
 
+namespace {
+
+std::string ImuSpan(const ImuStream& imu, const std::string& imu_path) {
+  return imu_path + " spans " + std::to_string(imu.front().t_ns) + " .. " + std::to_string(imu.back().t_ns) +
+         " ns (tolerance " + FormatDouble(NsToS(kSensorSpanTolerance_ns)) + " s)";
+}
+
+}  // namespace
+
+void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path,
+                               const std::vector<NavState>& groundtruth,
+                               const std::string& groundtruth_path) {
+  if (imu.empty() || groundtruth.empty()) return;
+  if (groundtruth.front().t_ns < imu.front().t_ns - kSensorSpanTolerance_ns)
+    throw InputError(Located(groundtruth_path, 2,
+                             "timestamp " + std::to_string(groundtruth.front().t_ns) +
+                                 ": the ground truth starts before the IMU; " + ImuSpan(imu, imu_path)));
+  if (groundtruth.back().t_ns > imu.back().t_ns + kSensorSpanTolerance_ns)
+    throw InputError(Located(groundtruth_path, static_cast<int>(groundtruth.size()) + 1,
+                             "timestamp " + std::to_string(groundtruth.back().t_ns) +
+                                 ": the ground truth ends after the IMU; " + ImuSpan(imu, imu_path)));
+}
+
+void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path, int64_t t_ns,
+                              const std::string& file, int line) {
+  if (imu.empty()) return;
+  if (t_ns < imu.front().t_ns - kSensorSpanTolerance_ns || t_ns > imu.back().t_ns + kSensorSpanTolerance_ns)
+    throw InputError(Located(file, line,
+                             "timestamp " + std::to_string(t_ns) +
+                                 ": camera frame outside the IMU's time span; " + ImuSpan(imu, imu_path)));
+}
+
 Dataset ReadDataset(const fs::path& dir) {
   using namespace dataset_files;
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": not a dataset directory");
@@ -391,6 +430,7 @@ Dataset ReadDataset(const fs::path& dir) {
   }
   if (fs::exists(dir / kGlitches)) d.glitches = ReadGlitchesCsv((dir / kGlitches).string());
   d.groundtruth = ReadGroundTruthCsv((dir / kGroundTruth).string());
+  CheckGroundTruthInImuSpan(d.imu, (dir / kImu).string(), d.groundtruth, (dir / kGroundTruth).string());
   d.landmarks = ReadLandmarksCsv((dir / kLandmarks).string());
   d.camera = ReadCameraYaml((dir / kCamera).string());
   // Camera frames at their recorded times: frames.csv (never reconstructed from camera.yaml's rate).

@@ -48,6 +48,20 @@ inline constexpr double kMaxAbsCoordinate_m = 1e6;     // positions (ground trut
 inline constexpr double kMaxAbsImuValue = 1e6;         // any gyroscope [rad/s] or accelerometer [m/s^2] axis
 inline constexpr int64_t kMaxImuGap_ns = 1000000000;   // between consecutive IMU samples (1 s)
 inline constexpr double kMaxAbsGroundTruthRate = 1e6;  // velocity [m/s] and bias components
+// A ground truth whose position jumps faster than this between consecutive rows is rejected (a teleport: a
+// glued or mis-stamped file; the fastest platforms vigil models fly at tens of m/s).
+inline constexpr double kMaxGroundTruthSpeed_mps = 100.0;
+// How far the ground truth and the camera frames may reach beyond the IMU's time span (a recording's sensors
+// start and stop a little apart; beyond this the recording is cut or its clocks disagree).
+inline constexpr int64_t kSensorSpanTolerance_ns = 100'000'000;  // 0.1 s
+
+// InputError "FILE:LINE: ..." unless the IMU covers the ground truth's span within kSensorSpanTolerance_ns
+// (`groundtruth` may be empty; its row k is line k + 2 of its file).
+void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path,
+                               const std::vector<NavState>& groundtruth, const std::string& groundtruth_path);
+// The same for one camera time, read at `file`:`line`.
+void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path, int64_t t_ns,
+                              const std::string& file, int line);
 
 // What a features.csv is checked against when its dataset is known (ReadDataset): ids of landmarks.csv,
 // pixels inside the image (with a margin of 10 x the pixel noise + 1 px; for a camera with lens distortion,

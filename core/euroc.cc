@@ -266,6 +266,9 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
     const fs::path list = dir / kMav0 / kCamera / kData;
     if (IsFile(list))
       rec.images = ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages, check_image_files);
+    for (const CameraImage& image : rec.images)
+      CheckCameraTimeInImuSpan(rec.dataset.imu, (dir / dataset_files::kImu).string(), image.t_ns,
+                               image.list_path, image.list_line);
     return rec;
   }
   const fs::path mav0 = FindMav0(dir);
@@ -293,10 +296,20 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
     d.groundtruth = ReadGroundTruthCsv(gt.string());
     rec.has_groundtruth = true;
   }
+  CheckGroundTruthInImuSpan(d.imu, (imu_dir / kData).string(), d.groundtruth, gt.string());
+  for (const CameraImage& image : rec.images)
+    CheckCameraTimeInImuSpan(d.imu, (imu_dir / kData).string(), image.t_ns, image.list_path, image.list_line);
   // Feature tracks beside mav0/ (e.g. written there by `vigil track`), at the image times.
   const fs::path root = mav0 == dir && fs::absolute(dir).lexically_normal().filename() == kMav0
                             ? fs::absolute(dir).lexically_normal().parent_path()
                             : dir;
+  // Faults injected into the recording (vigil inject): the glitch-free stream and the records beside mav0/.
+  const fs::path clean = root / dataset_files::kImuClean, glitches = root / dataset_files::kGlitches;
+  if (IsFile(clean)) {
+    d.imu_clean = ReadImuCsv(clean.string());
+    CheckCleanImuMatches(d.imu, d.imu_clean, (imu_dir / kData).string(), clean.string());
+  }
+  if (IsFile(glitches)) d.glitches = ReadGlitchesCsv(glitches.string());
   std::vector<int64_t> frame_times;
   for (const CameraImage& image : rec.images) frame_times.push_back(image.t_ns);
   const fs::path features = root / dataset_files::kFeatures;

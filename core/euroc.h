@@ -99,7 +99,10 @@ struct Recording {
 //   vigil simulate --images wrote them;
 // - a EuRoC folder as published: the folder holding mav0/, or mav0/ itself. IMU from imu0/, camera from cam0/
 //   (optional), ground truth from state_groundtruth_estimate0/ (optional), feature tracks from a features.csv
-//   beside mav0/ (optional; `vigil track` writes one), at the image timestamps.
+//   beside mav0/ (optional; `vigil track` writes one), at the image timestamps; imu_clean.csv and
+//   glitches.csv beside mav0/ (optional; `vigil inject` writes them).
+// Both layouts: the ground truth must lie inside the IMU's time span and so must every camera image's time
+// (core/dataset.h CheckGroundTruthInImuSpan, CheckCameraTimeInImuSpan).
 // Errors name the file and line; a folder that is neither layout is "DIR: not a dataset directory (...)".
 // With `check_image_files` false, cam0/data.csv may list images that are absent (a recording of feature
 // tracks only, whose frame times the list gives); whoever loads an image then finds it missing.

@@ -16,6 +16,14 @@ double ImuRmsDifference(const ImuStream& a, const ImuStream& b) {
   return std::sqrt(sum / static_cast<double>(a.size()));
 }
 
+namespace {
+
+double DetectionF1(double precision, double recall) {
+  return precision + recall > 0 ? 2 * precision * recall / (precision + recall) : 0.0;
+}
+
+}  // namespace
+
 DetectionMetrics EvaluateDetection(const ImuStream& raw, const DetectionResult& result,
                                    const std::vector<GlitchRecord>& glitches, const ImuStream& imu_clean) {
   const std::size_t n = raw.size();
@@ -58,10 +66,14 @@ DetectionMetrics EvaluateDetection(const ImuStream& raw, const DetectionResult& 
   m.recall = m.glitched_samples > 0
                  ? static_cast<double>(m.detected_glitched_samples) / static_cast<double>(m.glitched_samples)
                  : 1.0;
-  m.precision = m.flagged_segments > 0
-                    ? static_cast<double>(m.true_segments) / static_cast<double>(m.flagged_segments)
-                    : 1.0;
-  m.f1 = m.precision + m.recall > 0 ? 2 * m.precision * m.recall / (m.precision + m.recall) : 0.0;
+  m.precision = m.flagged_samples > 0 ? static_cast<double>(m.detected_glitched_samples) /
+                                            static_cast<double>(m.flagged_samples)
+                                      : 1.0;
+  m.segment_precision = m.flagged_segments > 0
+                            ? static_cast<double>(m.true_segments) / static_cast<double>(m.flagged_segments)
+                            : 1.0;
+  m.f1 = DetectionF1(m.precision, m.recall);
+  m.segment_f1 = DetectionF1(m.segment_precision, m.recall);
   const int64_t normal = m.samples - m.glitched_samples;
   m.false_positive_rate = normal > 0 ? static_cast<double>(false_flags) / static_cast<double>(normal) : 0.0;
   if (!imu_clean.empty()) {
@@ -76,6 +88,8 @@ nlohmann::json DetectionJson(const DetectionMetrics& m, bool with_glitches, bool
   j["samples"] = m.samples;
   j["flagged_samples"] = m.flagged_samples;
   j["flagged_segments"] = m.flagged_segments;
+  j["flagged_fraction"] =
+      m.samples > 0 ? static_cast<double>(m.flagged_samples) / static_cast<double>(m.samples) : 0.0;
   if (with_glitches) {
     j["glitched_samples"] = m.glitched_samples;
     j["detected_glitched_samples"] = m.detected_glitched_samples;
@@ -84,6 +98,8 @@ nlohmann::json DetectionJson(const DetectionMetrics& m, bool with_glitches, bool
     j["recall"] = m.recall;
     j["f1"] = m.f1;
     j["false_positive_rate"] = m.false_positive_rate;
+    j["segment_precision"] = m.segment_precision;
+    j["segment_f1"] = m.segment_f1;
   }
   if (with_clean) j["imu_rmse_vs_clean"] = {{"raw", m.imu_rmse_raw}, {"cleaned", m.imu_rmse_cleaned}};
   return j;

@@ -199,6 +199,7 @@ struct HampelOptions {
 
 struct DetectorOptions {
   DetectorType type = DetectorType::kNone;
+  std::string calibration_dataset;
   ThresholdOptions threshold;
   RelativeThresholdOptions relative_threshold;
   DtwOptions dtw;
@@ -210,6 +211,11 @@ struct DetectorOptions {
            "glitch detector + mitigation applied to the IMU stream: threshold (the paper's trunc: value "
            "bounds), relative_threshold (vigil: bound on the deviation from a running mean), dtw (templates; "
            "see dtw.normalization), hampel (rolling median / MAD)");
+    v.Field("calibration_dataset", calibration_dataset,
+            "runs on a recording (--dataset): the glitch-free reference that threshold bounds (calibration "
+            "clean) and dtw templates (no templates_file) are calibrated on: a dataset directory (its "
+            "imu_clean.csv, else imu.csv), a EuRoC folder (mav0/imu0/data.csv) or an IMU CSV. Empty: the "
+            "recording's own imu_clean.csv, else the run refuses. Simulated runs ignore it");
     v.Section("threshold", threshold,
               "the paper's threshold detector (trunc): bounds on the measured value, clamp or mean");
     v.Section("relative_threshold", relative_threshold,

@@ -193,10 +193,20 @@ bool Estimator::TryInitialize() {
   std::vector<InitFrame> init_window;
   for (const auto& f : window_) init_window.push_back(InitFrame{f->t_ns, f->features_n, f->imu_from_prev});
   InitResult result;
-  if (!initializer_->TryInitialize(init_window, &result)) return false;
-  if (result.states.size() != window_.size()) return false;
+  if (!initializer_->TryInitialize(init_window, &result)) {
+    init_failure_reason_ = result.failure_reason;
+    return false;
+  }
+  if (result.states.size() != window_.size()) {
+    init_failure_reason_ = "the initializer returned " + std::to_string(result.states.size()) +
+                           " states for a window of " + std::to_string(window_.size()) + " frames";
+    return false;
+  }
   for (std::size_t i = 0; i < window_.size(); ++i) {
-    if (!AllFinite(result.states[i])) return false;
+    if (!AllFinite(result.states[i])) {
+      init_failure_reason_ = "non-finite initial state";
+      return false;
+    }
     window_[i]->SetState(result.states[i]);
   }
   // Re-integrate the IMU from the initialized biases.

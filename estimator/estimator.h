@@ -78,6 +78,10 @@ class Estimator {
   const EstimatorTiming& timing() const { return timing_; }
   const GatingStats& gating() const { return gating_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
+  // The initializer's last failure reason (empty when it never ran or never failed).
+  const std::string& init_failure_reason() const { return init_failure_reason_; }
+  // Frames the initialization window holds (initialization waits until it is full).
+  int window_frames() const { return WindowCapacity(); }
 
  private:
   struct Frame {
@@ -167,6 +171,7 @@ class Estimator {
   uint64_t next_frame_id_ = 0;
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;
+  std::string init_failure_reason_;
   int resets_ = 0;
   int lost_frames_ = 0;  // consecutive frames with fewer than options_.failure.min_tracked_features tracks
   std::map<std::string, int> failure_checks_;

@@ -11,6 +11,7 @@
 #include "estimator/estimator.h"
 #include "estimator/imu_interval.h"
 #include "estimator/imu_trust.h"
+#include "estimator/init_diagnosis.h"
 #include "estimator/make_initializer.h"
 
 namespace vigil::estimator {
@@ -98,9 +99,14 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   }
   if (result.ok && result.states.empty()) {
     result.ok = false;
-    result.failure_reason = "the estimator never initialized";
+    result.failure_reason =
+        "the estimator never initialized: " +
+        DiagnoseNoInitialization(options, MeasureInitEvidence(input, imu), estimator.window_frames(),
+                                 estimator.init_failure_reason());
   }
-  if (estimator.initialized_at_ns()) result.initialized_at_s = NsToS(*estimator.initialized_at_ns());
+  // From the start of the recording (its first IMU sample), not the recording's clock.
+  if (estimator.initialized_at_ns())
+    result.initialized_at_s = NsToS(*estimator.initialized_at_ns() - imu.front().t_ns);
   result.resets = estimator.resets();
   result.failure_checks = estimator.failure_checks();
   result.keyframes = estimator.keyframes();

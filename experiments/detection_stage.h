@@ -6,10 +6,16 @@
 // the run's own data, so the detector learns nothing about the glitches it is scored on. The paper's
 // threshold detector with `detector.threshold.calibration: clean` likewise calibrates its bounds on a
 // glitch-free simulation (seed DeriveSeed(seed, "calibration")).
+//
+// A run on a recording (`--dataset`) never calibrates on a simulation of a scenario it does not run: it
+// calibrates on a CalibrationReference (below) or refuses.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -22,10 +28,30 @@
 
 namespace vigil::experiments {
 
+// The glitch-free IMU a run on a recording calibrates its detector on, and where it came from.
+struct CalibrationReference {
+  ImuStream imu;
+  std::string source;  // e.g. "imu_clean.csv of the recording", or the calibration dataset's file
+};
+
+// Whether the run's detector calibrates on clean data: threshold with calibration clean, or dtw with neither
+// a templates file nor a library given by the caller.
+bool NeedsCalibration(const RunConfig& config, bool templates_given);
+
+// For a run on `recording_dir` (whose imu_clean.csv, when present, is `dataset.imu_clean`): the reference
+// when NeedsCalibration, else nullopt. In order: detector.calibration_dataset (core/reference_imu.h), the
+// recording's imu_clean.csv; else InputError saying what to give (the message of `vigil clean`).
+std::optional<CalibrationReference> ResolveCalibrationReference(const RunConfig& config,
+                                                                const std::filesystem::path& recording_dir,
+                                                                const Dataset& dataset, bool with_clean,
+                                                                bool templates_given);
+
 // The library a dtw run uses (see above); null when the detector is not dtw. `given` may be null. The
-// returned holder owns a library it read or built, or points at `given`.
-std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(const RunConfig& config,
-                                                                   const detectors::TemplateLibrary* given);
+// returned holder owns a library it read or built, or points at `given`. With a `reference` (a run on a
+// recording) the library is built from reference->imu instead of a simulation.
+std::shared_ptr<const detectors::TemplateLibrary> ResolveTemplates(
+    const RunConfig& config, const detectors::TemplateLibrary* given,
+    const CalibrationReference* reference = nullptr);
 
 // The glitch-free simulation's library (the third source above): the run's scenario without glitches, seed
 // DeriveSeed(seed, "templates"), lengthened when needed to at least 2 (k + 1) slices of clean IMU.
@@ -41,8 +67,10 @@ detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const sim::Sim
 // simulation of the run's scenario with seed DeriveSeed(seed, "calibration") (never the run's own data).
 detectors::ThresholdBounds CalibrateThresholdFromGlitchFreeSimulation(const RunConfig& config);
 
-// config.detector as the run applies it: with calibrated threshold bounds when the above applies.
-detectors::DetectorOptions ResolveDetectorOptions(const RunConfig& config);
+// config.detector as the run applies it: with calibrated threshold bounds when the above applies (on
+// reference->imu when a reference is given).
+detectors::DetectorOptions ResolveDetectorOptions(const RunConfig& config,
+                                                  const CalibrationReference* reference = nullptr);
 
 struct DetectionStage {
   detectors::DetectionResult result;  // cleaned IMU + one flag per sample
@@ -54,6 +82,7 @@ struct DetectionStage {
 // dataset.imu_clean are known (precision/recall and the RMS difference to the clean IMU are reported only
 // then).
 DetectionStage RunDetection(const RunConfig& config, const Dataset& dataset,
-                            const detectors::TemplateLibrary* templates, bool with_glitches, bool with_clean);
+                            const detectors::TemplateLibrary* templates, bool with_glitches, bool with_clean,
+                            const CalibrationReference* reference = nullptr);
 
 }  // namespace vigil::experiments

@@ -90,6 +90,7 @@ std::string ResultsCsvWriter::Header() const {
     h += ",re_trans_mean_m_" + s + ",re_yaw_mean_deg_" + s + ",re_n_" + s;
   }
   h += ",detector,flagged_samples,glitched_samples,precision,recall,f1,imu_rmse_raw,imu_rmse_cleaned";
+  h += ",false_positive_rate,segment_precision,segment_f1";
   h += ",estimator_resets";
   h += ",nees_position_mean,nees_orientation_mean";
   return h;
@@ -119,6 +120,8 @@ std::string ResultsCsvWriter::Row(const SweepRunRef& run, const SweepCell& cell,
     r += "," + Number(MetricNumber(m, {"detection", key}));
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "raw"}));
   r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "cleaned"}));
+  for (const char* key : {"false_positive_rate", "segment_precision", "segment_f1"})
+    r += "," + Number(MetricNumber(m, {"detection", key}));
   r += "," + Number(MetricNumber(m, {"estimator", "resets"}));
   r += "," + Number(MetricNumber(m, {"nees", "position", "mean"}));
   r += "," + Number(MetricNumber(m, {"nees", "orientation", "mean"}));

@@ -122,11 +122,18 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   summary.wall.simulate_s = SecondsSince(t) - (data.frontend ? data.frontend->track_s : 0.0);
 
   t = Clock::now();
-  const auto templates = ResolveTemplates(config, options.templates);
+  // A recording calibrates on the clean reference the user names, never on a simulation it does not run.
+  const std::optional<CalibrationReference> reference =
+      options.dataset_dir.empty()
+          ? std::nullopt
+          : ResolveCalibrationReference(config, options.dataset_dir, data.dataset, data.with_clean,
+                                        options.templates != nullptr);
+  const CalibrationReference* reference_ptr = reference ? &*reference : nullptr;
+  const auto templates = ResolveTemplates(config, options.templates, reference_ptr);
   summary.wall.templates_s = SecondsSince(t);
   t = Clock::now();
-  DetectionStage detection =
-      RunDetection(config, data.dataset, templates.get(), data.with_glitches, data.with_clean);
+  DetectionStage detection = RunDetection(config, data.dataset, templates.get(), data.with_glitches,
+                                          data.with_clean, reference_ptr);
   summary.wall.detect_s = SecondsSince(t);
 
   // What the figures draw, taken before the cleaned stream moves into the estimator.

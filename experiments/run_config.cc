@@ -103,7 +103,8 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
   for (const std::string& file : {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
-                                  config.detector.dtw.templates_file, config.sim.imu.recording})
+                                  config.detector.dtw.templates_file, config.sim.imu.recording,
+                                  config.detector.calibration_dataset})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }

@@ -51,7 +51,8 @@ void ValidateRunConfig(const RunConfig& config, const std::string& origin);
 std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,
                                            std::string* rest);
 
-// The files a run with `config` reads besides its config file (waypoints, DTW templates): what its output
+// The files a run with `config` reads besides its config file (waypoints, DTW templates, calibration
+// dataset): what its output
 // must not overwrite (core/output.h RefuseOutputOverInputs).
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config);
 

@@ -113,9 +113,16 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   if (failures > 0)
     s += ", " + std::to_string(failures) + " failed marginalization" + (failures > 1 ? "s" : "") +
          " (prior dropped)";
-  std::snprintf(buf, sizeof(buf), ", detector %s, wall %.2f s",
-                m.at("detection").value("detector", std::string("none")).c_str(),
-                MetricNumber(m, {"wall_time_s", "total"}));
+  const nlohmann::json& detection = m.at("detection");
+  s += ", detector " + detection.value("detector", std::string("none"));
+  // Per-sample scores where the run knows the glitches (a detector that flags everything shows here).
+  if (detection.contains("precision") && detection.value("detector", std::string("none")) != "none") {
+    std::snprintf(buf, sizeof(buf), " (precision %.3f, recall %.3f, false positives %.2f %%)",
+                  MetricNumber(detection, {"precision"}), MetricNumber(detection, {"recall"}),
+                  100.0 * MetricNumber(detection, {"false_positive_rate"}));
+    s += buf;
+  }
+  std::snprintf(buf, sizeof(buf), ", wall %.2f s", MetricNumber(m, {"wall_time_s", "total"}));
   return s + buf;
 }
 

@@ -19,12 +19,17 @@ double CellResult::PooledReTrans(std::size_t d) const { return Ratio(re_trans_we
 double CellResult::PooledReYaw(std::size_t d) const { return Ratio(re_yaw_weighted[d], re_n[d]); }
 double CellResult::Precision() const { return Ratio(true_flagged, flagged); }
 double CellResult::Recall() const { return Ratio(true_flagged, glitched); }
+double CellResult::FalsePositiveRate() const {
+  return Ratio(scored_flagged - true_flagged, scored_samples - glitched);
+}
 
 void CellResult::Merge(const CellResult& o) {
   runs += o.runs;
   failed += o.failed;
   diverged += o.diverged;
   missing += o.missing;
+  scored_samples += o.scored_samples;
+  scored_flagged += o.scored_flagged;
   for (const auto& [reason, count] : o.failure_reasons) failure_reasons[reason] += count;
   ate_rmse_m.insert(ate_rmse_m.end(), o.ate_rmse_m.begin(), o.ate_rmse_m.end());
   if (re_n.size() < o.re_n.size()) {
@@ -82,6 +87,11 @@ void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances
   if (std::isfinite(glitched)) {
     cell->glitched += glitched;
     if (std::isfinite(recall)) cell->true_flagged += std::round(recall * glitched);
+    const double samples = MetricNumber(m, {"detection", "samples"});
+    if (std::isfinite(samples) && std::isfinite(flagged)) {
+      cell->scored_samples += samples;
+      cell->scored_flagged += flagged;
+    }
   }
 }
 

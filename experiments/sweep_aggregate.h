@@ -31,12 +31,15 @@ struct CellResult {
   std::vector<double> re_trans_weighted, re_yaw_weighted, re_n;
   std::vector<std::vector<double>> re_trans_run_means;  // per distance, one per run (for std / median)
   double flagged = 0, glitched = 0, true_flagged = 0;   // detection, summed over runs
+  // Samples and flagged samples of the runs scored against glitch labels (for the false-positive rate).
+  double scored_samples = 0, scored_flagged = 0;
 
   std::size_t ok() const { return runs - failed - diverged - missing; }
   double PooledReTrans(std::size_t d) const;  // NaN without segments
   double PooledReYaw(std::size_t d) const;
   double Precision() const;  // NaN when nothing was flagged
   double Recall() const;     // NaN when nothing was glitched
+  double FalsePositiveRate() const;  // flagged clean samples / clean samples; NaN without clean samples
   void Merge(const CellResult& other);
 };
 

@@ -108,8 +108,8 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
 
   s += "## ATE translation RMSE [m] per cell\n\n";
   s += "| group | method | runs | ok | diverged | failed | missing | mean | std | median | min | max | "
-       "detection precision | detection recall |\n"
-       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+       "detection precision | detection recall | false-positive rate |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t g = 0; g < agg.groups.size(); ++g) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
@@ -118,7 +118,8 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
            std::to_string(c.ok()) + " | " + std::to_string(c.diverged) + " | " + std::to_string(c.failed) +
            " | " + std::to_string(c.missing) +
            " | " + FormatCell(st.mean) + " | " + FormatCell(st.std) + " | " + FormatCell(st.median) + " | " + FormatCell(st.min) + " | " +
-           FormatCell(st.max) + " | " + FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " |\n";
+           FormatCell(st.max) + " | " + FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " | " +
+           FormatCell(c.FalsePositiveRate()) + " |\n";
     }
   }
   s += "\n## Relative translation error [m] per method, pooled over groups\n\n";

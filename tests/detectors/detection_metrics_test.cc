@@ -11,7 +11,7 @@ ImuStream Stream(int n) {
   return s;
 }
 
-TEST(DetectionMetrics, CountsRecallPerSampleAndPrecisionPerSegment) {
+TEST(DetectionMetrics, CountsPerSampleAndPerSegment) {
   const ImuStream raw = Stream(12);
   DetectionResult r{raw, {0, 1, 1, 1, 0, 0, 1, 0, 0, 1, 1, 0}};
   // Glitches at samples 2 (two axes: one sample), 5 and 10.
@@ -28,9 +28,32 @@ TEST(DetectionMetrics, CountsRecallPerSampleAndPrecisionPerSegment) {
   EXPECT_EQ(m.flagged_segments, 3);  // [1, 3], [6], [9, 10]
   EXPECT_EQ(m.true_segments, 2);
   EXPECT_DOUBLE_EQ(m.recall, 2.0 / 3.0);
-  EXPECT_DOUBLE_EQ(m.precision, 2.0 / 3.0);
-  EXPECT_DOUBLE_EQ(m.f1, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(m.precision, 2.0 / 6.0);  // samples 2 and 10 of the six flagged
+  EXPECT_DOUBLE_EQ(m.f1, 2 * (1.0 / 3.0) * (2.0 / 3.0) / (1.0 / 3.0 + 2.0 / 3.0));
+  EXPECT_DOUBLE_EQ(m.segment_precision, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(m.segment_f1, 2.0 / 3.0);
   EXPECT_DOUBLE_EQ(m.false_positive_rate, 4.0 / 9.0);
+}
+
+TEST(DetectionMetrics, FlaggingEverySampleScoresTheGlitchFraction) {
+  const ImuStream raw = Stream(200);
+  std::vector<GlitchRecord> glitches;
+  for (int t = 7; t < 200; t += 20) glitches.push_back({raw[t].t_ns, ImuAxis::kWx, 3.0});  // 10 of 200
+  const DetectionResult everything{raw, std::vector<uint8_t>(raw.size(), 1)};
+  const DetectionMetrics m = EvaluateDetection(raw, everything, glitches, {});
+  EXPECT_DOUBLE_EQ(m.recall, 1.0);
+  EXPECT_DOUBLE_EQ(m.precision, 10.0 / 200.0);
+  EXPECT_LT(m.f1, 0.1);
+  EXPECT_DOUBLE_EQ(m.false_positive_rate, 1.0);
+  EXPECT_DOUBLE_EQ(m.segment_precision, 1.0);  // one segment holding every glitch: why it is not the headline
+
+  // A detector that flags exactly the glitched samples scores 1 everywhere.
+  DetectionResult exact{raw, std::vector<uint8_t>(raw.size(), 0)};
+  for (int t = 7; t < 200; t += 20) exact.flagged[t] = 1;
+  const DetectionMetrics e = EvaluateDetection(raw, exact, glitches, {});
+  EXPECT_DOUBLE_EQ(e.precision, 1.0);
+  EXPECT_DOUBLE_EQ(e.f1, 1.0);
+  EXPECT_DOUBLE_EQ(e.false_positive_rate, 0.0);
 }
 
 TEST(DetectionMetrics, RmsDifferenceToTheCleanStream) {
@@ -44,7 +67,8 @@ TEST(DetectionMetrics, RmsDifferenceToTheCleanStream) {
   EXPECT_DOUBLE_EQ(m.imu_rmse_raw, std::sqrt(25.0 / 4));
   EXPECT_DOUBLE_EQ(m.imu_rmse_cleaned, 0.0);
   EXPECT_DOUBLE_EQ(m.recall, 1.0);     // nothing to find
-  EXPECT_DOUBLE_EQ(m.precision, 0.0);  // one flagged segment, no glitch in it
+  EXPECT_DOUBLE_EQ(m.precision, 0.0);  // one flagged sample, no glitch in it
+  EXPECT_DOUBLE_EQ(m.segment_precision, 0.0);
 }
 
 TEST(DetectionMetrics, JsonHasTheKeysOfFormatsMd) {
@@ -52,7 +76,8 @@ TEST(DetectionMetrics, JsonHasTheKeysOfFormatsMd) {
   m.precision = 0.5;
   m.imu_rmse_raw = 2.0;
   const nlohmann::json j = DetectionJson(m, true, true);
-  for (const char* key : {"flagged_samples", "glitched_samples", "precision", "recall", "f1"})
+  for (const char* key : {"flagged_samples", "glitched_samples", "precision", "recall", "f1",
+                          "false_positive_rate", "segment_precision", "segment_f1", "flagged_fraction"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["imu_rmse_vs_clean"]["raw"], 2.0);
   const nlohmann::json bare = DetectionJson(m, false, false);
