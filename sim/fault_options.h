@@ -86,10 +86,11 @@ struct TimingFaultOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
-    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped", Bounds::Probability());
+    // At most half: beyond, what is left is no longer an IMU stream a run can read.
+    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped", Bounds::Closed(0.0, 0.5));
     v.Field("duplicate_rate", duplicate_rate,
             "probability per IMU sample that it is stamped with the previous sample's timestamp",
-            Bounds::Probability());
+            Bounds::Closed(0.0, 0.5));
     v.Field(
         "jitter_std_s", jitter_std_s,
         "std of the Gaussian timestamp jitter, clipped to +-0.45 IMU periods so that the order is kept [s]",
