@@ -35,6 +35,9 @@ bool IsRegressionMetric(const std::string& metric);
 // no cells (a gate that compares nothing), a duplicate cell, or a null value where no run failed.
 void ReadBaseline(const std::string& path, std::vector<RegressionCell>* cells,
                   RegressionTolerance* tolerance);
+// The same on a file already in memory.
+void ReadBaselineText(const TextFile& file, std::vector<RegressionCell>* cells,
+                      RegressionTolerance* tolerance);
 
 // True when `path` holds a baseline (JSON with the baseline format): what --force may replace.
 bool IsBaselineFile(const std::string& path);

@@ -2,7 +2,8 @@
 // file is input like any other, so it is checked before a table counts it (formats.md gives its keys; keys
 // may be added, and unknown ones are ignored). Refused, with "FILE:LINE: key: reason":
 //   - anything but a JSON object, a "status" other than "ok" or "failed";
-//   - a "seed" that is not the run's (the metrics of another run copied in);
+//   - a "seed" that is not the run's (the metrics of another run copied in; a run that failed before it
+//     started has none);
 //   - where present: ate/relative statistics that are not numbers (null allowed) in [0, kMaxMetricValue],
 //     a "relative" that is not a list of {distance_m > 0, trans_m, yaw_deg}, detection counts that are not
 //     integers >= 0, precision/recall/f1 outside [0, 1], wall times that are not numbers >= 0.

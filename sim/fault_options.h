@@ -41,7 +41,9 @@ struct SaturationOptions {
   }
 };
 
-// Rounding of every sample to a multiple of the least significant bit. 0 means no quantization.
+// Rounding of every sample to a multiple of the least significant bit. 0 means no quantization; otherwise the
+// LSB is at least kMinQuantizationLsb (ValidateFaultOptions).
+inline constexpr double kMinQuantizationLsb = 1e-6;
 struct QuantizationOptions {
   double accel_lsb_mps2 = 0.0;  // [m/s^2]
   double gyro_lsb_dps = 0.0;    // [deg/s]

@@ -127,7 +127,7 @@ TEST_F(ReliabilityCli, TablesRefusesCorruptForeignOrMisplacedRunData) {
   spoil("\"seed\": 1", "\"seed\": 2");
   Expect("tables " + dir, 2, "seed: 2 is not this run's seed (1)");
   spoil("\"rmse\": ", "\"rmse\": -1, \"x\": ");
-  Expect("tables " + dir, 2, "ate.trans_m.rmse: must be in [0, 1e+09]");
+  Expect("tables " + dir, 2, ".rmse: must be in [0, 1e+09], got -1");
   WriteFileAtomic(run / "metrics.json", metrics);
   ASSERT_EQ(Vigil(tmp_, "tables " + dir).status, 0);
   // results.csv a directory: one line, nothing else written.
@@ -176,6 +176,51 @@ TEST_F(ReliabilityCli, SlurmTaskCountsAndTimesAreBounded) {
   Expect("slurm " + sweep + " -o " + Path("s") + " --tasks 1000000", 2, "--tasks 1000000: must be in");
   Expect("slurm " + sweep + " -o " + Path("s") + " --tasks 2 --time abc", 2, "not a Slurm time limit");
   EXPECT_FALSE(fs::exists(Path("s")));
+}
+
+TEST_F(ReliabilityCli, WhatSimulateAcceptsRunAccepts) {
+  const std::string config = tmp_.File("c.yaml", "duration_s: 2\nglitch:\n  enabled: true\n");
+  for (const std::string set : {"glitch.mean=1e308", "faults.timing.drop_rate=1", "duration_s=1e-320",
+                                "faults.quantization.accel_lsb_mps2=1e-320"}) {
+    Expect("simulate " + config + " -o " + Path("ds") + " --set " + set, 2, "--set " + set);
+    EXPECT_FALSE(fs::exists(Path("ds"))) << set;
+  }
+  // At the bounds, the dataset simulate writes is one run reads (the estimator may still fail: exit 1).
+  for (const std::string set : {"faults.timing.drop_rate=0.5", "duration_s=0.5", "glitch.mean=1e4"}) {
+    const std::string ds = Path("ds_" + std::to_string(set.size()));
+    ASSERT_EQ(Vigil(tmp_, "simulate " + config + " -o " + ds + " --set " + set).status, 0) << set;
+    const CliResult r = Vigil(tmp_, "run " + config + " --dataset " + ds + " -o " + ds + "_run --set " + set);
+    EXPECT_NE(r.status, 2) << set << ": " << r.err;
+  }
+}
+
+TEST_F(ReliabilityCli, PlotRunRefusesADatasetDirectory) {
+  const std::string config = tmp_.File("c.yaml", "duration_s: 1\n");
+  ASSERT_EQ(Vigil(tmp_, "simulate " + config + " -o " + Path("ds")).status, 0);
+  Expect("plot run " + Path("ds"), 2,
+         "not a run directory (no metrics.json); for a dataset: vigil plot dataset");
+  EXPECT_FALSE(fs::exists(Path("ds") + "/figures"));
+}
+
+TEST_F(ReliabilityCli, MapAndRocRefuseNonsenseBeforeAnyRun) {
+  Expect(
+      "map " + std::string(VIGIL_SOURCE_DIR) + "/configs/glitch_map.yaml -o " + Path("m") + " --target nan",
+      2, "--target");
+  tmp_.File("base.yaml", "duration_s: 2\nglitch:\n  enabled: true\n");
+  const std::string map = tmp_.File(
+      "map.yaml",
+      "base: base.yaml\naxes:\n  glitch:\n    big: {mean: 50, std: 1}\n    none: {mean: 0, std: 0}\n"
+      "  glitch.rate: [0.01, 0.02]\nmethods: {original: none}\nseeds: [1]\n");
+  Expect("map " + map + " -o " + Path("m"), 2, "the first axis must start at the glitch-free reference");
+  EXPECT_FALSE(fs::exists(Path("m")));
+  for (const std::string label : {"hampel_nan", "foo", "hampel_3x"}) {
+    const std::string roc = tmp_.File("roc.yaml", "base: base.yaml\nmethods:\n  " + label +
+                                                      ": {type: hampel, hampel.n_sigma: 3}\nseeds: [1]\n");
+    Expect("roc " + roc + " -o " + Path("r"), 2, "roc.yaml:3: methods: " + label + ": ");
+  }
+  const std::string wrong = tmp_.File("w.yaml", "base: base.yaml\nmethods:\n  hampel_3: none\nseeds: [1]\n");
+  Expect("roc " + wrong + " -o " + Path("r"), 2, "runs the none detector");
+  EXPECT_FALSE(fs::exists(Path("r")));
 }
 
 }  // namespace
