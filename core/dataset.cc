@@ -109,9 +109,7 @@ ImuStream ReadImuCsv(const TextFile& file) {
   CsvReader r(file, 7, "EuRoC imu0 layout: timestamp [ns], w_x, w_y, w_z, a_x, a_y, a_z");
   ImuStream imu;
   int64_t last = INT64_MIN;
-  int first_line = 0;
   while (r.Next()) {
-    if (first_line == 0) first_line = r.line();
     ImuSample s;
     s.t_ns = r.Int(0);
     // Equal timestamps are accepted: consumer IMUs stamp two samples alike now and then (the estimator
@@ -127,12 +125,6 @@ ImuStream ReadImuCsv(const TextFile& file) {
     imu.push_back(s);
   }
   CheckNotEmpty(r, imu.size());
-  // Timestamps never decrease (checked above): the stream spans time when the last differs from the first.
-  if (imu.back().t_ns == imu.front().t_ns)
-    throw InputError(Located(r.path(), first_line,
-                             std::to_string(imu.size()) + (imu.size() == 1 ? " sample" : " samples, all") +
-                                 " at timestamp " + std::to_string(imu.front().t_ns) +
-                                 ": an IMU stream needs at least two distinct timestamps"));
   return imu;
 }
 

@@ -1,5 +1,6 @@
 #include "core/euroc.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -111,6 +112,18 @@ std::string ListYaml(const std::vector<double>& v) {
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + FormatDouble(v[i]);
   return s + "]";
+}
+
+// The 1-based line of the first row of a CSV text (after its '#' header and blank lines).
+int FirstDataLine(const std::string& text) {
+  int line = 1;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::size_t first = text.find_first_not_of(" \t\r", at);
+    if (first < end && text[first] != '#') return line;
+    at = end + 1;
+  }
+  return 0;
 }
 
 // Whether an optional file is there; a symbolic link to nothing is an error, never "absent" (a dangling
@@ -306,7 +319,14 @@ Recording ReadRecording(const fs::path& dir) {
   rec.layout = "euroc";
   Dataset& d = rec.dataset;
   const fs::path imu_dir = mav0 / kImu;
-  d.imu = ReadImuCsv((imu_dir / kData).string());
+  const TextFile imu_file = ReadTextFile((imu_dir / kData).string());
+  d.imu = ReadImuCsv(imu_file);
+  // Timestamps never decrease (ReadImuCsv): the stream spans no time when the last equals the first.
+  if (d.imu.back().t_ns == d.imu.front().t_ns)
+    throw InputError(Located(imu_file.path, FirstDataLine(imu_file.text),
+                             std::to_string(d.imu.size()) + (d.imu.size() == 1 ? " sample" : " samples, all") +
+                                 " at timestamp " + std::to_string(d.imu.front().t_ns) +
+                                 ": an IMU stream needs at least two distinct timestamps"));
   if (IsFile(imu_dir / kSensor))
     rec.imu_sensor = ReadEurocImuSensorYaml(ReadTextFile((imu_dir / kSensor).string(), kMaxSensorYamlBytes));
   const fs::path cam_dir = mav0 / kCamera;

@@ -92,9 +92,7 @@ class LineSax : public nlohmann::json_sax<json> {
     if (stack_.empty()) return "";
     const Frame& f = stack_.back();
     if (f.node->is_array()) return f.pointer + "/" + std::to_string(f.node->size());
-    std::string escaped;
-    for (char c : key_) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-    return f.pointer + "/" + escaped;
+    return f.pointer + "/" + PointerToken(key_);
   }
   json* Place(json v, const std::string& pointer) {
     (*lines_)[pointer] = Line();
@@ -166,6 +164,12 @@ void JsonDocument::Fail(const std::string& pointer, const std::string& why) cons
     line = LineOf(at);
   }
   throw InputError(Located(path_, line, PointerAsKey(pointer) + ": " + why));
+}
+
+std::string PointerToken(const std::string& key) {
+  std::string escaped;
+  for (char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return escaped;
 }
 
 std::string PointerAsKey(const std::string& pointer) {

@@ -33,6 +33,9 @@ class JsonDocument {
   std::map<std::string, int> lines_;
 };
 
+// `key` as one token of a JSON pointer ('~' written "~0", '/' written "~1"): "/a/" + PointerToken(key).
+std::string PointerToken(const std::string& key);
+
 // "/cells/3/value" -> "cells[3].value" ("(top level)" for the root).
 std::string PointerAsKey(const std::string& pointer);
 

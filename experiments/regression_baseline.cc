@@ -54,14 +54,15 @@ void ReadBaselineText(const TextFile& file, std::vector<RegressionCell>* cells,
     doc.Fail("/format", std::string("expected \"") + kBaselineFormat + "\"");
   for (const auto& [key, value] : j.items())
     if (key != "format" && key != "sweep" && key != "tolerance" && key != "cells")
-      doc.Fail("/" + key, "unknown key");
+      doc.Fail("/" + PointerToken(key), "unknown key");
   if (j.contains("sweep")) at("/sweep", &nlohmann::json::is_string, "a string");
   at("/tolerance", &nlohmann::json::is_object, "an object");
   tolerance->relative = number("/tolerance/relative");
   tolerance->absolute.clear();
   for (const auto& [metric, value] :
        at("/tolerance/absolute", &nlohmann::json::is_object, "an object").items()) {
-    if (!IsRegressionMetric(metric)) doc.Fail("/tolerance/absolute/" + metric, "unknown metric");
+    if (!IsRegressionMetric(metric))
+      doc.Fail("/tolerance/absolute/" + PointerToken(metric), "unknown metric");
     tolerance->absolute[metric] = number("/tolerance/absolute/" + metric);
   }
   const nlohmann::json& list = at("/cells", &nlohmann::json::is_array, "an array of cells");
@@ -73,7 +74,7 @@ void ReadBaselineText(const TextFile& file, std::vector<RegressionCell>* cells,
     at(p, &nlohmann::json::is_object, "an object {metric, cell, value, failed}");
     for (const auto& [key, value] : list[i].items())
       if (key != "metric" && key != "cell" && key != "value" && key != "failed")
-        doc.Fail(p + "/" + key, "unknown key");
+        doc.Fail(p + "/" + PointerToken(key), "unknown key");
     RegressionCell cell;
     cell.metric = at(p + "/metric", &nlohmann::json::is_string, "a string").get<std::string>();
     if (!IsRegressionMetric(cell.metric))

@@ -82,7 +82,7 @@ json ReadRunMetricsText(const TextFile& file, uint64_t seed) {
   check.Number("/duration_s", 0, kMaxMetricValue);
   if (const json* wall = check.Object("/wall_time_s"))
     for (const auto& [stage, value] : wall->items())
-      check.Number("/wall_time_s/" + stage, 0, kMaxMetricValue);
+      check.Number("/wall_time_s/" + PointerToken(stage), 0, kMaxMetricValue);
   if (check.Object("/ate")) {
     check.Stats("/ate/trans_m");
     check.Stats("/ate/rot_deg");

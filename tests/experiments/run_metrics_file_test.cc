@@ -61,5 +61,13 @@ TEST(RunMetricsFile, CorruptValuesAreRefusedWithTheirLine) {
   EXPECT_NE(ErrorOf(tmp, "{\"status\": ").find("not valid JSON"), std::string::npos);
 }
 
+TEST(RunMetricsFile, KeysWithPointerCharactersAreCheckedNotThrown) {
+  TempDir tmp;
+  // '~' and '/' in a key the reader walks (found by fuzzing: it threw a JSON-pointer error).
+  EXPECT_EQ(ErrorOf(tmp, "{\"status\": \"ok\", \"wall_time_s\": {\"si~ulate\": 0.1, \"a/b\": 1}}"), "");
+  EXPECT_EQ(ErrorOf(tmp, "{\"status\": \"ok\",\n \"wall_time_s\": {\"x~/y\": -1}}"),
+            tmp.path().string() + "/metrics.json:2: wall_time_s.x~/y: must be in [0, 1e+09], got -1");
+}
+
 }  // namespace
 }  // namespace vigil::experiments
