@@ -60,7 +60,7 @@ class ReliabilityCli : public ::testing::Test {
 
 TEST_F(ReliabilityCli, JobsBeyondTheMaximumAreRefusedBeforeAnythingIsWritten) {
   const std::string configs = std::string(VIGIL_SOURCE_DIR) + "/configs/";
-  for (const std::string command :
+  for (const std::string& command :
        {"sweep " + configs + "ci_sweep.yaml", "map " + configs + "glitch_map.yaml",
         "roc " + configs + "roc_paper.yaml", std::string("paper")}) {
     Expect(command + " -o " + Path("out") + " -j 100000", 2, "--jobs");
@@ -180,13 +180,13 @@ TEST_F(ReliabilityCli, SlurmTaskCountsAndTimesAreBounded) {
 
 TEST_F(ReliabilityCli, WhatSimulateAcceptsRunAccepts) {
   const std::string config = tmp_.File("c.yaml", "duration_s: 2\nglitch:\n  enabled: true\n");
-  for (const std::string set : {"glitch.mean=1e308", "faults.timing.drop_rate=1", "duration_s=1e-320",
+  for (const std::string& set : {"glitch.mean=1e308", "faults.timing.drop_rate=1", "duration_s=1e-320",
                                 "faults.quantization.accel_lsb_mps2=1e-320"}) {
     Expect("simulate " + config + " -o " + Path("ds") + " --set " + set, 2, "--set " + set);
     EXPECT_FALSE(fs::exists(Path("ds"))) << set;
   }
   // At the bounds, the dataset simulate writes is one run reads (the estimator may still fail: exit 1).
-  for (const std::string set : {"faults.timing.drop_rate=0.5", "duration_s=0.5", "glitch.mean=1e4"}) {
+  for (const std::string& set : {"faults.timing.drop_rate=0.5", "duration_s=0.5", "glitch.mean=1e4"}) {
     const std::string ds = Path("ds_" + std::to_string(set.size()));
     ASSERT_EQ(Vigil(tmp_, "simulate " + config + " -o " + ds + " --set " + set).status, 0) << set;
     const CliResult r = Vigil(tmp_, "run " + config + " --dataset " + ds + " -o " + ds + "_run --set " + set);
@@ -213,7 +213,7 @@ TEST_F(ReliabilityCli, MapAndRocRefuseNonsenseBeforeAnyRun) {
       "  glitch.rate: [0.01, 0.02]\nmethods: {original: none}\nseeds: [1]\n");
   Expect("map " + map + " -o " + Path("m"), 2, "the first axis must start at the glitch-free reference");
   EXPECT_FALSE(fs::exists(Path("m")));
-  for (const std::string label : {"hampel_nan", "foo", "hampel_3x"}) {
+  for (const std::string& label : {"hampel_nan", "foo", "hampel_3x"}) {
     const std::string roc = tmp_.File("roc.yaml", "base: base.yaml\nmethods:\n  " + label +
                                                       ": {type: hampel, hampel.n_sigma: 3}\nseeds: [1]\n");
     Expect("roc " + roc + " -o " + Path("r"), 2, "roc.yaml:3: methods: " + label + ": ");
