@@ -184,7 +184,10 @@ TEST_F(ReliabilityCli, WhatSimulateAcceptsRunAccepts) {
   for (const char* text : {"glitch.mean=1e308", "faults.timing.drop_rate=1", "duration_s=1e-320",
                            "faults.quantization.accel_lsb_mps2=1e-320"}) {
     const std::string set = text;
-    Expect("simulate " + config + " -o " + Path("ds") + " --set " + set, 2, "--set " + set);
+    // Named as every --set error is: "--set: KEY: reason" (a bound) or "--set KEY=VALUE: KEY: reason".
+    const CliResult r = Expect("simulate " + config + " -o " + Path("ds") + " --set " + set, 2,
+                               set.substr(0, set.find('=')) + ": ");
+    EXPECT_EQ(r.err.rfind("vigil: error: --set", 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(Path("ds"))) << set;
   }
   // At the bounds, the dataset simulate writes is one run reads (the estimator may still fail: exit 1).
