@@ -10,6 +10,7 @@
 #include "core/config.h"
 #include "core/dataset.h"
 #include "core/error.h"
+#include "core/euroc.h"
 #include "core/output.h"
 #include "detectors/detection_metrics.h"
 #include "detectors/detector.h"
@@ -19,10 +20,10 @@
 namespace vigil::app {
 
 void AddCleanCommand(CLI::App& root) {
-  auto* cmd =
-      root.add_subcommand("clean",
-                          "run a glitch detector + mitigation on DATASET/imu.csv (or DATASET/mav0/imu0/data.csv, "
-                          "or an imu0 CSV path); writes DIR/imu.csv, DIR/detections.csv, DIR/detection.json, DIR/config.yaml");
+  auto* cmd = root.add_subcommand(
+      "clean",
+      "run a glitch detector + mitigation on DATASET/imu.csv (or DATASET/mav0/imu0/data.csv, "
+      "or an imu0 CSV path); writes DIR/imu.csv, DIR/detections.csv, DIR/detection.json, DIR/config.yaml");
   struct Args {
     std::string dataset, output, detector, templates;
     DetectorArgs overrides;
@@ -52,6 +53,11 @@ void AddCleanCommand(CLI::App& root) {
     // Read everything before writing anything.
     const ImuInput input = ResolveImuInput(args->dataset, dataset_files::kImu);
     const ImuStream raw = ReadImuCsv(input.imu.string());
+    // A EuRoC imu0/ folder describes its IMU in sensor.yaml beside data.csv: checked like every input,
+    // although cleaning needs none of it.
+    if (const std::filesystem::path sensor = input.imu.parent_path() / euroc_files::kSensor;
+        input.imu.filename() == euroc_files::kData && std::filesystem::exists(sensor))
+      (void)ReadEurocImuSensorYaml(ReadTextFile(sensor.string(), 1 << 20));
     if (options.type == detectors::DetectorType::kThreshold &&
         options.threshold.calibration == detectors::ThresholdCalibration::kClean)
       throw InputError(

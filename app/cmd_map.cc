@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/sweep_args.h"
+#include "core/format.h"
 #include "core/output.h"
 #include "experiments/glitch_map.h"
 #include "plots/glitch_map_figure.h"
@@ -28,12 +29,16 @@ void AddMapCommand(CLI::App& root) {
   args->run.AddTo(cmd);
   cmd->add_option("--target", args->target_ratio, "ratio the best method should stay within")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            double v = 0;
+            return ParseDouble(text, &v) && v > 0 && v <= 1e6 ? "" : "expected a finite ratio in (0, 1e6]";
+          },
+          "RATIO"));
   SetAction(cmd, [args] {
     const experiments::SweepSpec spec = experiments::LoadSweepSpec(args->sweep);
     // Checked before any run: a spec that cannot give a map is refused up front.
-    if (spec.axes.size() != 2 || spec.axes[0].settings.size() < 2)
-      experiments::ReadGlitchMap(args->run.output, spec);
+    experiments::CheckGlitchMapSpec(spec);
     const int status = args->run.Run(spec, "map");
     const experiments::GlitchMap map = experiments::ReadGlitchMap(args->run.output, spec);
     const std::filesystem::path out = std::filesystem::path(args->run.output) / "map.md";

@@ -29,6 +29,10 @@ std::vector<fs::path> PlotInputs(const std::string& kind, const fs::path& dir, c
         inputs.push_back(e.path());
   }
   if (kind == "run") {  // metrics.json names the dataset of a `vigil run --dataset` run
+    if (!fs::is_regular_file(fs::path(dir) / "metrics.json", ec))
+      throw InputError(
+          dir.string() + ": not a run directory (no metrics.json)" +
+          (fs::exists(fs::path(dir) / "imu.csv", ec) ? "; for a dataset: vigil plot dataset DIR" : ""));
     const nlohmann::json& metrics = plots::LoadRunDirectory(dir).metrics;
     if (metrics.is_object() && metrics.contains("dataset") && metrics["dataset"].is_string())
       inputs.emplace_back(metrics["dataset"].get<std::string>());

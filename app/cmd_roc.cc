@@ -27,6 +27,7 @@ void AddRocCommand(CLI::App& root) {
   args->run.AddTo(cmd);
   SetAction(cmd, [args] {
     const experiments::SweepSpec spec = experiments::LoadSweepSpec(args->sweep);
+    experiments::CheckRocMethodLabels(spec);  // before any run
     const int status = args->run.Run(spec, "roc");
     const auto curves = experiments::ReadDetectionRoc(args->run.output, spec);
     const std::filesystem::path dir(args->run.output);

@@ -1,14 +1,19 @@
 // `vigil slurm`: a sweep (or the paper's) as a Slurm job array of shards plus a finalize job; with --submit,
 // submitted through sbatch. See experiments/slurm_job.h for the scripts.
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/config_dir.h"
@@ -36,22 +41,49 @@ fs::path FindOnPath(const std::string& name) {
   return {};
 }
 
-// Runs `command` (a shell command line) and returns its trimmed stdout; std::runtime_error on failure.
-std::string RunAndCapture(const std::string& command) {
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) throw std::runtime_error(command + ": cannot start");
+// Runs `argv` (no shell: argv[0] is the program's path) and returns its stdout; std::runtime_error when it
+// cannot start or exits non-zero. At most 64 KiB of output is kept.
+std::string RunAndCapture(const std::vector<std::string>& argv) {
+  std::string shown;
+  for (const std::string& word : argv) shown += (shown.empty() ? "" : " ") + experiments::ShellQuote(word);
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error(shown + ": cannot create a pipe");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  std::vector<char*> args;
+  for (const std::string& word : argv) args.push_back(const_cast<char*>(word.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = ::posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(fds[1]);
+  if (spawned != 0) {
+    ::close(fds[0]);
+    throw std::runtime_error(shown + ": cannot start: " + std::strerror(spawned));
+  }
   std::string out;
-  char buf[256];
-  while (std::fgets(buf, sizeof buf, pipe)) out += buf;
-  const int status = ::pclose(pipe);
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r' || out.back() == ' ')) out.pop_back();
-  if (status != 0)
-    throw std::runtime_error(command + ": failed (exit status " + std::to_string(status) + ")");
+  char buf[4096];
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    if (out.size() < (64u << 10)) out.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(shown + ": failed (" +
+                             (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                                : "signal " + std::to_string(WTERMSIG(status))) +
+                             ")");
   return out;
 }
-
-// "1234" of sbatch --parsable's "1234;cluster".
-std::string JobId(const std::string& parsable) { return parsable.substr(0, parsable.find(';')); }
 
 void WriteScript(const fs::path& path, const std::string& text) {
   WriteFileAtomic(path, text);
@@ -149,12 +181,12 @@ void AddSlurmCommand(CLI::App& root) {
     }
 
     // 3. Submission.
-    const std::string array =
-        JobId(RunAndCapture(experiments::ShellQuote(sbatch.string()) + " --parsable " +
-                            experiments::ShellQuote((slurm_dir / "array.sbatch").string())));
-    const std::string finalize =
-        JobId(RunAndCapture(experiments::ShellQuote(sbatch.string()) + " --parsable --dependency=afterany:" +
-                            array + " " + experiments::ShellQuote((slurm_dir / "finalize.sbatch").string())));
+    // sbatch runs without a shell, and only a job id it printed goes into the next command.
+    const std::string array = experiments::ParseSbatchJobId(
+        RunAndCapture({sbatch.string(), "--parsable", (slurm_dir / "array.sbatch").string()}));
+    const std::string finalize = experiments::ParseSbatchJobId(
+        RunAndCapture({sbatch.string(), "--parsable", "--dependency=afterany:" + array,
+                       (slurm_dir / "finalize.sbatch").string()}));
     std::printf("%s\n%s\n", array.c_str(), finalize.c_str());
     std::fprintf(stderr, "vigil slurm: submitted array job %s (%d tasks) and finalize job %s; logs in %s\n",
                  array.c_str(), job.tasks, finalize.c_str(), slurm_dir.c_str());

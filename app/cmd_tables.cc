@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "core/error.h"
 #include "experiments/tables.h"
 #include "plots/render.h"
 
@@ -39,6 +40,14 @@ void AddTablesCommand(CLI::App& root) {
                 "exit 0 even when runs are missing (tables of the runs finished so far)");
   cmd->add_flag("--figures", args->figures, "also render figures/*.png, as vigil paper does");
   SetAction(cmd, [args] {
+    // What is replaced must be a file: a directory (or FIFO...) of that name is refused before any work.
+    for (const char* name : {"results.csv", "timing.csv", "summary.md"}) {
+      const std::filesystem::path path = std::filesystem::path(args->dir) / name;
+      std::error_code ec;
+      if (std::filesystem::exists(std::filesystem::symlink_status(path, ec)) &&
+          !std::filesystem::is_regular_file(std::filesystem::status(path, ec)))
+        throw InputError(path.string() + ": exists and is not a regular file; move it away");
+    }
     const experiments::SweepAggregate agg = experiments::WriteSweepTables(args->dir);
     std::fprintf(stderr,
                  "vigil tables: %zu runs (%zu failed, %zu missing) -> %s/{results.csv, timing.csv, table2-4, "

@@ -16,8 +16,10 @@ void SweepArgs::AddTo(CLI::App* cmd) {
   cmd->add_option("-o,--output", output,
                   "sweep directory to write (runs/, results.csv, timing.csv, tables, summary.md); required "
                   "unless --list");
-  cmd->add_option("-j,--jobs", threads, "runs in parallel (default: every core); each run is single-threaded")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-j,--jobs", threads,
+                  "runs in parallel, 1 .. " + std::to_string(kMaxJobs) +
+                      " (default or 0: every core); each run is single-threaded")
+      ->check(CLI::Range(0, kMaxJobs));
   auto* resume_flag = cmd->add_flag(
       "--resume", resume, "continue an interrupted sweep in the output directory (finished runs kept)");
   cmd->add_flag("--force", force, "start over in a non-empty output directory (removes its runs/ and tables)")

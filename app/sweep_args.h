@@ -11,6 +11,10 @@
 
 namespace vigil::app {
 
+// The most runs in parallel `-j` accepts (docs/safety.md): far above any machine's cores, far below what
+// the thread pool can create.
+inline constexpr int kMaxJobs = 256;
+
 struct SweepArgs {
   std::string output;
   int threads = 0;

@@ -118,12 +118,57 @@ void Reader::Fail(const YAML::Node& n, const std::string& key, const std::string
 
 void Reader::RejectUnknownKeys() const {
   for (auto it = node_.begin(); it != node_.end(); ++it) {
+    if (!it->first.IsScalar()) {
+      // A null key (`~:` or `: value`) or a complex one: name it by its line (KeyLine cannot find it).
+      const int line = has_lines_ && it->first.Mark().line >= 0 ? it->first.Mark().line + 1 : 0;
+      throw InputError(Located(
+          origin_, line,
+          Path(it->first.IsNull() ? "~" : "(complex key)") + ": unknown key (a key must be a plain name)"));
+    }
     const std::string key = it->first.Scalar();
     if (!known_.count(key)) Fail(it->first, key, "unknown key");
   }
 }
 
 namespace {
+// Walks `node` depth first, with its ancestors in `path` (a recursive alias makes a node its own descendant).
+class ShapeCheck {
+ public:
+  ShapeCheck(std::string where, bool has_lines) : where_(std::move(where)), has_lines_(has_lines) {}
+
+  void Visit(const YAML::Node& node, const YAML::Node& nearest_marked) {
+    const YAML::Node& at = node.Mark().line >= 0 ? node : nearest_marked;
+    if (++visited_ > kMaxYamlNodes)
+      Fail(at, "more than " + std::to_string(kMaxYamlNodes) + " values once aliases are expanded");
+    if (!node.IsMap() && !node.IsSequence()) return;
+    for (const YAML::Node& ancestor : path_)
+      if (ancestor.is(node)) Fail(at, "a recursive alias (a node that contains itself)");
+    if (static_cast<int>(path_.size()) >= kMaxYamlDepth)
+      Fail(at, "nested deeper than " + std::to_string(kMaxYamlDepth) + " levels");
+    path_.push_back(node);
+    if (node.IsMap()) {
+      for (auto it = node.begin(); it != node.end(); ++it) {
+        Visit(it->first, at);
+        Visit(it->second, it->first.Mark().line >= 0 ? it->first : at);
+      }
+    } else {
+      for (auto it = node.begin(); it != node.end(); ++it) Visit(*it, at);
+    }
+    path_.pop_back();
+  }
+
+ private:
+  [[noreturn]] void Fail(const YAML::Node& at, const std::string& why) const {
+    const int line = has_lines_ && at.Mark().line >= 0 ? at.Mark().line + 1 : 0;
+    throw InputError(Located(where_, line, why));
+  }
+
+  std::string where_;
+  bool has_lines_;
+  std::vector<YAML::Node> path_;
+  std::size_t visited_ = 0;
+};
+
 // yaml-cpp keeps both entries of a duplicated key and lookups see only the first: refuse them.
 void RejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& prefix) {
   if (node.IsSequence()) {
@@ -159,8 +204,13 @@ YAML::Node LoadYamlText(const TextFile& file) {
   } catch (const YAML::ParserException& e) {
     throw InputError(Located(file.path, e.mark.line + 1, "YAML syntax error: " + e.msg));
   }
+  CheckYamlShape(root, file.path);
   RejectDuplicateKeys(root, file.path, "");
   return root;
+}
+
+void CheckYamlShape(const YAML::Node& root, const std::string& where, bool has_lines) {
+  ShapeCheck(where, has_lines).Visit(root, root);
 }
 
 int KeyLine(const YAML::Node& root, const std::string& key_path) {

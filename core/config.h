@@ -182,8 +182,16 @@ class Reader {
   std::set<std::string> known_;
 };
 
-// Parses a YAML file into a node; InputError "file:line: reason" on a syntax error, "file: ..." if
-// unreadable.
+// The shape every YAML input must have (docs/safety.md): no alias that refers to a node containing it (a
+// recursive alias), nesting at most kMaxYamlDepth mappings/sequences deep, and at most kMaxYamlNodes values
+// once aliases are expanded.
+inline constexpr int kMaxYamlDepth = 32;
+inline constexpr std::size_t kMaxYamlNodes = 1 << 20;
+// InputError "where:line: reason" (no line when `where` has none, e.g. a --set) when `root` breaks the shape.
+void CheckYamlShape(const YAML::Node& root, const std::string& where, bool has_lines = true);
+
+// Parses a YAML file into a node; InputError "file:line: reason" on a syntax error, a recursive alias or too
+// deep a nesting (CheckYamlShape), "file: ..." if unreadable.
 YAML::Node LoadYamlFile(const std::string& path);
 // The same on a file already in memory (errors name file.path).
 YAML::Node LoadYamlText(const TextFile& file);
@@ -227,6 +235,7 @@ void ApplyOverride(const std::string& assignment, Options& options) {
   } catch (const YAML::Exception& e) {
     throw InputError("--set " + key + ": cannot parse value: " + e.msg);
   }
+  CheckYamlShape(value, "--set " + key, /*has_lines=*/false);
   Reader reader(NestKey(key, value), "--set", /*has_lines=*/false);
   options.Visit(reader);
   reader.RejectUnknownKeys();

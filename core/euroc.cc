@@ -1,5 +1,6 @@
 #include "core/euroc.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -23,10 +24,15 @@ TextFile WithoutOpenCvDirective(TextFile file) {
   return file;
 }
 
+std::string RateRule() {
+  return "must be in [" + FormatDouble(kMinSensorRateHz) + ", " + FormatDouble(kMaxSensorRateHz) + "] Hz";
+}
+
 // A parsed sensor.yaml and the errors it gives.
 class SensorYaml {
  public:
-  explicit SensorYaml(const TextFile& file) : path_(file.path), root_(config::LoadYamlText(WithoutOpenCvDirective(file))) {
+  explicit SensorYaml(const TextFile& file)
+      : path_(file.path), root_(config::LoadYamlText(WithoutOpenCvDirective(file))) {
     if (!root_.IsMap()) throw InputError(Located(path_, 1, "expected a mapping of keys (EuRoC sensor.yaml)"));
   }
 
@@ -53,7 +59,8 @@ class SensorYaml {
   }
 
   std::vector<double> Numbers(const std::string& key, const YAML::Node& node, std::size_t n) const {
-    if (!node.IsSequence() || node.size() != n) Fail(key, "expected a list of " + std::to_string(n) + " numbers");
+    if (!node.IsSequence() || node.size() != n)
+      Fail(key, "expected a list of " + std::to_string(n) + " numbers");
     std::vector<double> v;
     for (const YAML::Node& e : node) v.push_back(Number(key, e));
     return v;
@@ -68,7 +75,8 @@ class SensorYaml {
 
   // T_BS: {cols: 4, rows: 4, data: [16 numbers]}, a rigid transform.
   Eigen::Isometry3d Transform(const std::string& key) const {
-    const YAML::Node node = Required(key, "the sensor's pose in the body frame, {cols: 4, rows: 4, data: [16]}");
+    const YAML::Node node =
+        Required(key, "the sensor's pose in the body frame, {cols: 4, rows: 4, data: [16]}");
     if (!node.IsMap() || !node["data"]) Fail(key, "expected {cols: 4, rows: 4, data: [16 numbers]}");
     if (node["rows"] && Number(key, node["rows"]) != 4) Fail(key, "rows: expected 4");
     if (node["cols"] && Number(key, node["cols"]) != 4) Fail(key, "cols: expected 4");
@@ -76,6 +84,9 @@ class SensorYaml {
     check.T_BC = Numbers(key, node["data"], 16);
     const std::string why = check.Validate();
     if (!why.empty()) Fail(key, why.substr(why.find(':') + 2));
+    if (check.p_BC().norm() > kMaxSensorOffsetM)
+      Fail(key, "translation of " + FormatDouble(check.p_BC().norm()) +
+                    " m: a sensor on the body lies within " + FormatDouble(kMaxSensorOffsetM) + " m of it");
     return check.T_BC_iso();
   }
 
@@ -103,9 +114,27 @@ std::string ListYaml(const std::vector<double>& v) {
   return s + "]";
 }
 
+// The 1-based line of the first row of a CSV text (after its '#' header and blank lines).
+int FirstDataLine(const std::string& text) {
+  int line = 1;
+  for (std::size_t at = 0; at < text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::size_t first = text.find_first_not_of(" \t\r", at);
+    if (first < end && text[first] != '#') return line;
+    at = end + 1;
+  }
+  return 0;
+}
+
+// Whether an optional file is there; a symbolic link to nothing is an error, never "absent" (a dangling
+// ground-truth link would otherwise silently mean "no ground truth").
 bool IsFile(const fs::path& path) {
   std::error_code ec;
-  return fs::exists(path, ec);
+  if (fs::exists(path, ec)) return true;
+  if (fs::is_symlink(fs::symlink_status(path, ec)))
+    throw InputError(path.string() + ": a symbolic link to nothing (" + fs::read_symlink(path, ec).string() +
+                     "); fix it or remove it");
+  return false;
 }
 
 }  // namespace
@@ -118,13 +147,17 @@ std::string EurocImuSensorYaml(const EurocImuSensor& s) {
          "# Sensor extrinsics wrt. the body-frame.\n" +
          MatrixYaml(s.T_BS) + "rate_hz: " + FormatDouble(s.rate_hz) +
          "\n\n# inertial sensor noise model parameters (static)\n"
-         "gyroscope_noise_density: " + FormatDouble(s.gyroscope_noise_density) +
+         "gyroscope_noise_density: " +
+         FormatDouble(s.gyroscope_noise_density) +
          "     # [ rad / s / sqrt(Hz) ]   ( gyro \"white noise\" )\n"
-         "gyroscope_random_walk: " + FormatDouble(s.gyroscope_random_walk) +
+         "gyroscope_random_walk: " +
+         FormatDouble(s.gyroscope_random_walk) +
          "       # [ rad / s^2 / sqrt(Hz) ] ( gyro bias diffusion )\n"
-         "accelerometer_noise_density: " + FormatDouble(s.accelerometer_noise_density) +
+         "accelerometer_noise_density: " +
+         FormatDouble(s.accelerometer_noise_density) +
          "  # [ m / s^2 / sqrt(Hz) ]   ( accel \"white noise\" )\n"
-         "accelerometer_random_walk: " + FormatDouble(s.accelerometer_random_walk) +
+         "accelerometer_random_walk: " +
+         FormatDouble(s.accelerometer_random_walk) +
          "    # [ m / s^3 / sqrt(Hz) ]   ( accel bias diffusion )\n";
 }
 
@@ -136,9 +169,11 @@ std::string EurocCameraSensorYaml(const CameraModel& c) {
          "# Sensor extrinsics wrt. the body-frame.\n" +
          MatrixYaml(c.T_BC_iso()) +
          "\n# Camera specific definitions.\n"
-         "rate_hz: " + FormatDouble(c.rate_hz) + "\nresolution: [" + std::to_string(c.width) + ", " +
-         std::to_string(c.height) + "]\ncamera_model: pinhole\nintrinsics: " +
-         ListYaml({c.fx, c.fy, c.cx, c.cy}) + " #fu, fv, cu, cv\ndistortion_model: radial-tangential\n" +
+         "rate_hz: " +
+         FormatDouble(c.rate_hz) + "\nresolution: [" + std::to_string(c.width) + ", " +
+         std::to_string(c.height) +
+         "]\ncamera_model: pinhole\nintrinsics: " + ListYaml({c.fx, c.fy, c.cx, c.cy}) +
+         " #fu, fv, cu, cv\ndistortion_model: radial-tangential\n" +
          "distortion_coefficients: " + ListYaml(c.distortion) + "\n";
 }
 
@@ -158,7 +193,7 @@ EurocImuSensor ReadEurocImuSensorYaml(const TextFile& file) {
   EurocImuSensor s;
   s.T_BS = y.Transform("T_BS");
   s.rate_hz = y.Number("rate_hz", "the IMU rate [Hz]");
-  if (!(s.rate_hz > 0.0)) y.Fail("rate_hz", "must be positive");
+  if (!(s.rate_hz >= kMinSensorRateHz && s.rate_hz <= kMaxSensorRateHz)) y.Fail("rate_hz", RateRule());
   const auto density = [&](const char* key) {
     const double v = y.Number(key, "IMU noise model");
     if (v < 0.0) y.Fail(key, "must not be negative");
@@ -179,7 +214,7 @@ CameraModel ReadEurocCameraSensorYaml(const TextFile& file) {
   for (int r = 0; r < 4; ++r)
     for (int col = 0; col < 4; ++col) c.T_BC[4 * r + col] = T_BS.matrix()(r, col);
   c.rate_hz = y.Number("rate_hz", "the camera rate [Hz]");
-  if (!(c.rate_hz > 0.0)) y.Fail("rate_hz", "must be positive");
+  if (!(c.rate_hz >= kMinSensorRateHz && c.rate_hz <= kMaxSensorRateHz)) y.Fail("rate_hz", RateRule());
   const std::vector<double> res = y.Numbers("resolution", y.Required("resolution", "[width, height]"), 2);
   for (double v : res)
     if (v < 1.0 || v > 100000.0 || v != std::floor(v))
@@ -191,7 +226,10 @@ CameraModel ReadEurocCameraSensorYaml(const TextFile& file) {
     y.Fail("camera_model", "'" + model + "' is not supported (vigil reads pinhole cameras)");
   const std::vector<double> k =
       y.Numbers("intrinsics", y.Required("intrinsics", "a pinhole camera needs [fu, fv, cu, cv]"), 4);
-  if (!(k[0] > 0.0) || !(k[1] > 0.0)) y.Fail("intrinsics", "focal lengths fu, fv must be positive");
+  if (!(k[0] >= 1.0 && k[0] <= kMaxFocalLengthPx) || !(k[1] >= 1.0 && k[1] <= kMaxFocalLengthPx))
+    y.Fail("intrinsics", "focal lengths fu, fv must be in [1, " + FormatDouble(kMaxFocalLengthPx) + "] px");
+  if (!(k[2] >= 0.0 && k[2] <= c.width) || !(k[3] >= 0.0 && k[3] <= c.height))
+    y.Fail("intrinsics", "principal point cu, cv must lie in the image (0 .. width, 0 .. height px)");
   c.fx = k[0];
   c.fy = k[1];
   c.cx = k[2];
@@ -202,6 +240,11 @@ CameraModel ReadEurocCameraSensorYaml(const TextFile& file) {
     y.Fail("distortion_model", "'" + distortion + "' is not supported (radial-tangential or none)");
   if (y.Has("distortion_coefficients") && distortion != "none")
     c.distortion = y.Numbers("distortion_coefficients", y.Required("distortion_coefficients", ""), 4);
+  for (double coefficient : c.distortion)
+    if (!(std::abs(coefficient) <= kMaxDistortionCoefficient))
+      y.Fail("distortion_coefficients", "k1, k2, p1, p2 must be within +-" +
+                                            FormatDouble(kMaxDistortionCoefficient) + " (got " +
+                                            FormatDouble(coefficient) + ")");
   return c;
 }
 
@@ -214,12 +257,12 @@ std::vector<CameraImage> ReadEurocImageList(const TextFile& file, const fs::path
     CameraImage image;
     image.t_ns = r.Int(0);
     if (last != INT64_MIN && image.t_ns <= last)
-      r.Fail("timestamp " + std::to_string(image.t_ns) + " does not increase (previous " + std::to_string(last) +
-             ")");
+      r.Fail("timestamp " + std::to_string(image.t_ns) + " does not increase (previous " +
+             std::to_string(last) + ")");
     last = image.t_ns;
     const std::string name(r.Text(1));
-    if (name.empty()) r.Fail("filename: missing (expected the image file name, e.g. " +
-                             EurocImageName(image.t_ns) + ")");
+    if (name.empty())
+      r.Fail("filename: missing (expected the image file name, e.g. " + EurocImageName(image.t_ns) + ")");
     image.path = fs::absolute(image_dir / name).lexically_normal().string();
     image.list_path = r.path();
     image.list_line = r.line();
@@ -236,9 +279,9 @@ std::vector<CameraImage> ReadEurocImageList(const TextFile& file, const fs::path
 void CheckImageSize(const CameraImage& image, int width, int height, const CameraModel& camera) {
   if (width == camera.width && height == camera.height) return;
   throw InputError(Located(image.list_path, image.list_line,
-                           image.path + ": image is " + std::to_string(width) + " x " + std::to_string(height) +
-                               ", the camera's sensor.yaml declares " + std::to_string(camera.width) + " x " +
-                               std::to_string(camera.height)));
+                           image.path + ": image is " + std::to_string(width) + " x " +
+                               std::to_string(height) + ", the camera's sensor.yaml declares " +
+                               std::to_string(camera.width) + " x " + std::to_string(camera.height)));
 }
 
 fs::path FindMav0(const fs::path& dir) {
@@ -273,12 +316,20 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
   }
   const fs::path mav0 = FindMav0(dir);
   if (mav0.empty())
-    throw InputError(dir.string() +
-                     ": not a dataset directory (expected imu.csv of vigil's layout, or a EuRoC mav0/ folder)");
+    throw InputError(
+        dir.string() +
+        ": not a dataset directory (expected imu.csv of vigil's layout, or a EuRoC mav0/ folder)");
   rec.layout = "euroc";
   Dataset& d = rec.dataset;
   const fs::path imu_dir = mav0 / kImu;
-  d.imu = ReadImuCsv((imu_dir / kData).string());
+  const TextFile imu_file = ReadTextFile((imu_dir / kData).string());
+  d.imu = ReadImuCsv(imu_file);
+  // Timestamps never decrease (ReadImuCsv): the stream spans no time when the last equals the first.
+  if (d.imu.back().t_ns == d.imu.front().t_ns)
+    throw InputError(Located(imu_file.path, FirstDataLine(imu_file.text),
+                             std::to_string(d.imu.size()) + (d.imu.size() == 1 ? " sample" : " samples, all") +
+                                 " at timestamp " + std::to_string(d.imu.front().t_ns) +
+                                 ": an IMU stream needs at least two distinct timestamps"));
   if (IsFile(imu_dir / kSensor))
     rec.imu_sensor = ReadEurocImuSensorYaml(ReadTextFile((imu_dir / kSensor).string(), kMaxSensorYamlBytes));
   const fs::path cam_dir = mav0 / kCamera;
@@ -290,6 +341,13 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
       for (int c = 0; c < 4; ++c) d.camera.T_BC[4 * r + c] = T_IC.matrix()(r, c);
     rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages, check_image_files);
     rec.has_camera = true;
+    // An image after the last IMU sample has no motion to go with it: a list of another recording.
+    for (const CameraImage& image : rec.images)
+      if (!d.imu.empty() && image.t_ns > d.imu.back().t_ns)
+        throw InputError(Located(image.list_path, image.list_line,
+                                 "image at " + std::to_string(image.t_ns) +
+                                     " ns, after the last IMU sample (" + std::to_string(d.imu.back().t_ns) +
+                                     " ns in " + (imu_dir / kData).string() + ")"));
   }
   const fs::path gt = mav0 / kGroundTruth / kData;
   if (IsFile(gt)) {

@@ -5,7 +5,8 @@
 //                                              random walks
 //   mav0/cam0/data.csv                         #timestamp [ns],filename
 //   mav0/cam0/data/<timestamp>.png             8-bit grayscale images
-//   mav0/cam0/sensor.yaml                      T_BS {cols: 4, rows: 4, data: [16]}, rate_hz, resolution [w, h],
+//   mav0/cam0/sensor.yaml                      T_BS {cols: 4, rows: 4, data: [16]}, rate_hz, resolution [w,
+//   h],
 //                                              camera_model: pinhole, intrinsics [fu, fv, cu, cv],
 //                                              distortion_model: radial-tangential,
 //                                              distortion_coefficients [k1, k2, p1, p2]
@@ -65,8 +66,16 @@ std::string EurocImageListCsv(const std::vector<int64_t>& times_ns);
 // The image file name of a timestamp: "<t_ns>.png".
 std::string EurocImageName(int64_t t_ns);
 
+// The physical bounds a sensor.yaml must respect (docs/safety.md): a value beyond them is a typo or a corrupt
+// file, refused rather than run on.
+inline constexpr double kMinSensorRateHz = 0.1, kMaxSensorRateHz = 100000.0;  // rate_hz
+inline constexpr double kMaxSensorOffsetM = 100.0;                            // |T_BS translation|
+inline constexpr double kMaxFocalLengthPx = 100000.0;                         // fu, fv (from 1 px)
+inline constexpr double kMaxDistortionCoefficient = 10.0;                     // |k1|, |k2|, |p1|, |p2|
+
 // Readers; errors are "file:line: key: reason". The camera reader needs T_BS, rate_hz, resolution,
-// intrinsics (pinhole), and reads distortion_coefficients (radial-tangential, or none/absent = zeros).
+// intrinsics (pinhole; the principal point inside the image), and reads distortion_coefficients
+// (radial-tangential, or none/absent = zeros).
 EurocImuSensor ReadEurocImuSensorYaml(const TextFile& file);
 CameraModel ReadEurocCameraSensorYaml(const TextFile& file);
 // cam0/data.csv: rows "timestamp,filename" with increasing timestamps and a file name (relative to
@@ -91,7 +100,7 @@ struct Recording {
   bool has_camera = false;          // a camera model is known (camera.yaml or cam0/)
   bool has_features = false;        // features.csv was read into dataset.frames
   bool has_groundtruth = false;
-  std::string layout;               // "vigil" (imu.csv, ...) or "euroc" (mav0/ only)
+  std::string layout;  // "vigil" (imu.csv, ...) or "euroc" (mav0/ only)
 };
 
 // Reads a recording:

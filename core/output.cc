@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <set>
@@ -56,6 +57,56 @@ void RefuseExisting(const fs::path& dir, bool force) {
 }
 }  // namespace
 
+std::string EntryFingerprint(const fs::path& entry) {
+  // FNV-1a, 64 bits: not a defence against a forger (who can compute any hash), a check that an entry is
+  // still the one vigil wrote (docs/safety.md, "The output manifest").
+  uint64_t hash = 14695981039346656037ull;
+  auto mix = [&](const char* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+      hash = (hash ^ static_cast<unsigned char>(data[i])) * 1099511628211ull;
+  };
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(entry, ec);
+  std::string kind;
+  uintmax_t size = 0;
+  if (fs::is_symlink(status)) {
+    kind = "link";
+    const std::string target = fs::read_symlink(entry, ec).string();
+    mix(target.data(), target.size());
+    size = target.size();
+  } else if (fs::is_regular_file(status)) {
+    kind = "file";
+    std::ifstream in(entry, std::ios::binary);
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+      mix(buf, static_cast<std::size_t>(in.gcount()));
+      size += static_cast<uintmax_t>(in.gcount());
+    }
+  } else if (fs::is_directory(status)) {
+    // A directory's fingerprint is its listing (every path below it, its type and file size), not the
+    // content: enough to see a directory swapped or changed, without reading a dataset's images again.
+    kind = "dir";
+    std::vector<std::string> lines;
+    for (auto it = fs::recursive_directory_iterator(entry, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      const fs::file_status s = it->symlink_status(ec);
+      std::string line = it->path().lexically_relative(entry).string();
+      line += fs::is_regular_file(s) ? " f " + std::to_string(it->file_size(ec))
+              : fs::is_directory(s)  ? " d"
+                                     : " o";
+      lines.push_back(std::move(line));
+    }
+    std::sort(lines.begin(), lines.end());
+    for (const std::string& line : lines) mix(line.c_str(), line.size() + 1);
+    size = lines.size();
+  } else {
+    return "other";
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%s %ju %016jx", kind.c_str(), size, static_cast<uintmax_t>(hash));
+  return text;
+}
+
 std::vector<std::string> ReadOutputManifest(const fs::path& dir) {
   const fs::path manifest = dir / kOutputManifest;
   std::error_code ec;
@@ -68,16 +119,25 @@ std::vector<std::string> ReadOutputManifest(const fs::path& dir) {
     throw InputError(Located(manifest.string(), 1,
                              std::string("expected '") + kOutputManifestHeader +
                                  "': not a vigil manifest, so --force does not replace " + dir.string()));
+  // "NAME<TAB>FINGERPRINT": only a plain entry name of `dir` whose fingerprint still matches counts as
+  // vigil's; any other line (no fingerprint, a path, a changed entry) leaves its entry to the user.
   std::vector<std::string> names;
-  while (std::getline(in, line))
-    if (!line.empty()) names.push_back(line);
+  while (std::getline(in, line)) {
+    const std::size_t tab = line.find('\t');
+    if (tab == std::string::npos || tab == 0) continue;
+    const std::string name = line.substr(0, tab);
+    if (name == "." || name == ".." || name == kOutputManifest || name.find('/') != std::string::npos)
+      continue;
+    if (EntryFingerprint(dir / name) == line.substr(tab + 1)) names.push_back(name);
+  }
   return names;
 }
 
 void WriteOutputManifest(const fs::path& dir) {
   std::string text = std::string(kOutputManifestHeader) + "\n";
   for (const std::string& name : EntryNames(dir))
-    if (name != kOutputManifest) text += name + "\n";
+    if (name != kOutputManifest && name.find_first_of("\t\n") == std::string::npos)
+      text += name + "\t" + EntryFingerprint(dir / name) + "\n";
   WriteFileAtomic(dir / kOutputManifest, text);
 }
 

@@ -5,8 +5,10 @@
 // WriteFileAtomic: one file, via a temporary file in the same directory and rename(2).
 //
 // Every output directory vigil creates holds a manifest, ".vigil-output": the line "vigil output directory"
-// followed by the names of the entries vigil wrote into it, one per line. `--force` replaces only a directory
-// with a manifest, and only the entries it lists: whatever else is in it (files a user added) is kept.
+// followed by one line per entry vigil wrote into it, "NAME<TAB>FINGERPRINT" (EntryFingerprint). `--force`
+// replaces only a directory with a manifest, and only the entries it lists whose fingerprint still matches:
+// whatever else is in it (files a user added, entries changed since, names a copied or hand-written manifest
+// lists without the right fingerprint) is kept.
 // RefuseOutputOverInputs: an output that is, contains or lies inside an input is refused, with or without
 // --force (paths compared after resolving symbolic links, "..", and ".").
 #pragma once
@@ -22,9 +24,12 @@ namespace vigil {
 inline constexpr const char* kOutputManifest = ".vigil-output";
 inline constexpr const char* kOutputManifestHeader = "vigil output directory";
 
-// The entry names listed by `dir`'s manifest; InputError when `dir` has none (or not a valid one): it was not
-// written by vigil.
+// The entry names listed by `dir`'s manifest whose fingerprints still match; InputError when `dir` has none
+// (or not a valid one): it was not written by vigil.
 std::vector<std::string> ReadOutputManifest(const std::filesystem::path& dir);
+// "KIND SIZE HASH" of one entry: a file's size and FNV-1a hash of its content, a directory's count and hash
+// of its recursive listing (paths, types, file sizes), a symbolic link's target.
+std::string EntryFingerprint(const std::filesystem::path& entry);
 // Writes the manifest of `dir` listing its current top-level entries.
 void WriteOutputManifest(const std::filesystem::path& dir);
 

@@ -1,9 +1,12 @@
 #include "experiments/detection_roc.h"
 
+#include <cctype>
 #include <cmath>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/format.h"
+#include "core/output.h"
 #include "experiments/metrics_access.h"
 #include "experiments/sweep_aggregate.h"
 
@@ -15,7 +18,47 @@ std::string CurveOf(const std::string& method) {
   return cut == std::string::npos ? method : method.substr(0, cut);
 }
 
+// The line of `label:` in the sweep file (0 when not found): method labels may hold '.', which KeyLine
+// reads as nesting.
+int LabelLine(const std::string& path, const std::string& label) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return 0;
+  std::istringstream in(ReadFile(path, 16 << 20));
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start != std::string::npos && line.compare(start, label.size() + 1, label + ":") == 0) return n;
+  }
+  return 0;
+}
+
 }  // namespace
+
+void CheckRocMethodLabels(const SweepSpec& spec) {
+  const std::vector<SweepCell> cells = EnumerateCells(spec);  // the first cells: one per method, in order
+  for (std::size_t i = 0; i < spec.methods.size() && i < cells.size(); ++i) {
+    const SweepSetting& m = spec.methods[i];
+    auto fail = [&](const std::string& why) {
+      throw InputError(Located(spec.path, LabelLine(spec.path, m.label), "methods: " + m.label + ": " + why));
+    };
+    const std::size_t cut = m.label.rfind('_');
+    double point = 0;
+    if (cut == std::string::npos || cut == 0 || !ParseDouble(m.label.substr(cut + 1), &point))
+      fail("a ROC method label is <curve>_<point>, the point a finite number (e.g. hampel_3)");
+    const std::string curve = m.label.substr(0, cut);
+    for (char c : curve)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
+        fail("the curve name may hold letters, digits and '_'");
+    const std::string detector =
+        config::EnumNameOf(ResolveCellConfig(spec, cells[i]).detector.type, detectors::DetectorTypeNames());
+    const bool named_after = curve == detector || (curve.size() > detector.size() + 1 &&
+                                                   curve.compare(curve.size() - detector.size() - 1,
+                                                                 std::string::npos, "_" + detector) == 0);
+    if (!named_after)
+      fail("the curve '" + curve + "' runs the " + detector + " detector: name it " + detector +
+           "_<point> (or " + "<variant>_" + detector + "_<point>)");
+  }
+}
 
 std::vector<RocCurve> ReadDetectionRoc(const std::filesystem::path& dir, const SweepSpec& spec) {
   // Pooled counts per method: detected glitched samples, glitched, false flags, normal samples.

@@ -27,6 +27,12 @@ struct RocCurve {
   std::vector<RocPoint> points;  // in the sweep's method order
 };
 
+// InputError "SWEEP:LINE: methods: LABEL: reason" unless every method label is <curve>_<point>: a curve
+// name (letters, digits, '_') and a finite number (e.g. hampel_3, relative_threshold_0.5), and each method
+// of a curve runs that curve's detector (the curve's name is the detector's, or the detector's with a
+// variant prefix such as normalized_dtw).
+void CheckRocMethodLabels(const SweepSpec& spec);
+
 // InputError naming the sweep when no run recorded detection statistics with glitches.
 std::vector<RocCurve> ReadDetectionRoc(const std::filesystem::path& dir, const SweepSpec& spec);
 

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <stdexcept>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/error.h"
 #include "core/interpolation.h"
+#include "core/output.h"
+#include "frontend/gray_png.h"
 
 namespace vigil::experiments {
 
@@ -26,8 +26,8 @@ frontend::TrackerCamera TrackerCameraOf(const CameraModel& camera) {
 
 TrackedFeatures TrackImages(std::size_t count,
                             const std::function<std::pair<int64_t, cv::Mat>(std::size_t)>& image_at,
-                            const std::function<std::string(std::size_t)>& describe, const CameraModel& camera,
-                            const frontend::FeatureTrackerOptions& options) {
+                            const std::function<std::string(std::size_t)>& describe,
+                            const CameraModel& camera, const frontend::FeatureTrackerOptions& options) {
   using Clock = std::chrono::steady_clock;
   TrackedFeatures out;
   frontend::FeatureTracker tracker(options, TrackerCameraOf(camera));
@@ -62,8 +62,12 @@ TrackedFeatures TrackImageFiles(const std::vector<CameraImage>& images, const Ca
     std::error_code ec;
     if (!std::filesystem::is_regular_file(images[i].path, ec))
       throw InputError(describe(i) + ": no such image file");
-    cv::Mat image = cv::imread(images[i].path, cv::IMREAD_GRAYSCALE);
-    if (image.empty()) throw InputError(describe(i) + ": cannot read the image");
+    cv::Mat image;
+    try {
+      image = frontend::DecodeGrayPng(ReadFile(images[i].path));
+    } catch (const InputError& e) {
+      throw InputError(describe(i) + ": " + e.what());
+    }
     CheckImageSize(images[i], image.cols, image.rows, camera);
     return {images[i].t_ns, image};
   };
@@ -84,8 +88,8 @@ frontend::ReprojectionEvaluation EvaluateTracks(const std::vector<CameraFrame>& 
     return T_WB * T_BC;
   };
   const frontend::PinholeIntrinsics intrinsics{camera.fx, camera.fy, camera.cx, camera.cy};
-  return frontend::EvaluateReprojection(frames, frontend::ComputeTruePixels(frames, intrinsics, pose_at, ray_cast),
-                                        outlier_threshold_px);
+  return frontend::EvaluateReprojection(
+      frames, frontend::ComputeTruePixels(frames, intrinsics, pose_at, ray_cast), outlier_threshold_px);
 }
 
 }  // namespace vigil::experiments

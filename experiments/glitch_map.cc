@@ -65,11 +65,27 @@ int GlitchMap::BestMethod(std::size_t row, std::size_t column) const {
   return best;
 }
 
-GlitchMap ReadGlitchMap(const std::filesystem::path& dir, const SweepSpec& spec) {
+void CheckGlitchMapSpec(const SweepSpec& spec) {
   if (spec.axes.size() != 2 || spec.axes[0].settings.size() < 2)
     throw InputError(spec.path +
                      ": axes: a map needs exactly two axes, the first with the glitch-free "
                      "reference setting first and at least one more");
+  // The reference row is what every ratio divides by: it must be glitch-free in every column.
+  const std::vector<SweepCell> cells = EnumerateCells(spec);
+  const std::size_t per_row = spec.axes[1].settings.size() * spec.methods.size();
+  for (std::size_t c = 0; c < per_row && c < cells.size(); ++c) {
+    const sim::GlitchOptions& g = ResolveCellConfig(spec, cells[c]).sim.glitch;
+    if (g.enabled && !(g.mean == 0.0 && g.std == 0.0))
+      throw InputError(spec.path +
+                       ": axes: the first axis must start at the glitch-free reference (glitches "
+                       "off, or mean 0 and std 0); its first setting '" +
+                       spec.axes[0].settings[0].label + "' gives N(" + FormatDouble(g.mean) + ", " +
+                       FormatDouble(g.std) + ") glitches");
+  }
+}
+
+GlitchMap ReadGlitchMap(const std::filesystem::path& dir, const SweepSpec& spec) {
+  CheckGlitchMapSpec(spec);
   GlitchMap map;
   map.row_axis = spec.axes[0].key;
   map.column_axis = spec.axes[1].key;

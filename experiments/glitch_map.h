@@ -40,8 +40,11 @@ struct GlitchMap {
   int BestMethod(std::size_t row, std::size_t column) const;
 };
 
-// Reads the sweep in `dir` (spec = its sweep.yaml). InputError when the spec has not exactly two axes or
-// the first has fewer than two settings.
+// InputError when the spec cannot give a map: not exactly two axes, fewer than two settings on the first,
+// or a first setting (the reference every ratio divides by) that is not glitch-free.
+void CheckGlitchMapSpec(const SweepSpec& spec);
+
+// Reads the sweep in `dir` (spec = its sweep.yaml), checked by CheckGlitchMapSpec.
 GlitchMap ReadGlitchMap(const std::filesystem::path& dir, const SweepSpec& spec);
 
 // map.md: one table per method (cells: ratio, with "F" for failed runs), the best method per cell, and the

@@ -13,7 +13,6 @@
 namespace vigil::experiments {
 namespace {
 
-constexpr const char* kFormat = "vigil-regress-baseline-1";
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string Show(double v) {
@@ -47,7 +46,7 @@ std::vector<RegressionCell> RegressionCells(const SweepAggregate& agg) {
 nlohmann::json BaselineJson(const std::vector<RegressionCell>& cells, const RegressionTolerance& tolerance,
                             const std::string& sweep) {
   nlohmann::json j;
-  j["format"] = kFormat;
+  j["format"] = kBaselineFormat;
   j["sweep"] = sweep;
   j["tolerance"] = {{"relative", tolerance.relative}, {"absolute", tolerance.absolute}};
   j["cells"] = nlohmann::json::array();
@@ -57,33 +56,6 @@ nlohmann::json BaselineJson(const std::vector<RegressionCell>& cells, const Regr
     j["cells"].push_back(cell);
   }
   return j;
-}
-
-void ReadBaseline(const std::string& path, std::vector<RegressionCell>* cells,
-                  RegressionTolerance* tolerance) {
-  const nlohmann::json j = nlohmann::json::parse(ReadFile(path), nullptr, false);
-  auto fail = [&](const std::string& key, const std::string& why) {
-    throw InputError(path + ": " + key + ": " + why);
-  };
-  if (j.is_discarded() || !j.is_object()) fail("(top level)", "not a JSON object");
-  if (j.value("format", "") != kFormat) fail("format", std::string("expected \"") + kFormat + "\"");
-  try {
-    const auto& tol = j.at("tolerance");
-    tolerance->relative = tol.at("relative").get<double>();
-    tolerance->absolute = tol.at("absolute").get<std::map<std::string, double>>();
-    cells->clear();
-    for (const auto& c : j.at("cells")) {
-      RegressionCell cell;
-      cell.metric = c.at("metric").get<std::string>();
-      cell.cell = c.at("cell").get<std::string>();
-      cell.value = c.at("value").is_null() ? kNaN : c.at("value").get<double>();
-      cell.failed = c.at("failed").get<long>();
-      cells->push_back(cell);
-    }
-  } catch (const nlohmann::json::exception& e) {
-    fail("cells/tolerance", e.what());
-  }
-  if (tolerance->relative < 0) fail("tolerance.relative", "must be >= 0");
 }
 
 RegressionReport CompareWithBaseline(const std::vector<RegressionCell>& current,

@@ -1,6 +1,8 @@
 #include "experiments/slurm_job.h"
 
 #include <algorithm>
+#include <cctype>
+#include <stdexcept>
 
 #include "core/error.h"
 
@@ -22,7 +24,58 @@ void CheckDirectiveValue(const std::string& key, const std::string& value) {
   if (!plain) throw InputError("--" + key + " " + value + ": may not contain spaces, quotes or '#'");
 }
 
+// sbatch --time: MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS (1 to 4 digits per field), or no limit.
+bool IsSbatchTime(const std::string& t) {
+  if (t == "UNLIMITED" || t == "INFINITE" || t == "unlimited" || t == "infinite") return true;
+  std::vector<std::string> fields;
+  std::string days, rest = t;
+  if (const std::size_t dash = t.find('-'); dash != std::string::npos) {
+    days = t.substr(0, dash);
+    rest = t.substr(dash + 1);
+  }
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t colon = rest.find(':', start);
+    fields.push_back(rest.substr(start, colon == std::string::npos ? std::string::npos : colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  auto number = [](const std::string& f) {
+    return !f.empty() && f.size() <= 4 &&
+           std::all_of(f.begin(), f.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  if (!days.empty() || t.find('-') != std::string::npos) {
+    if (!number(days) || fields.size() > 3) return false;
+  } else if (fields.size() > 3) {
+    return false;
+  }
+  return std::all_of(fields.begin(), fields.end(), number);
+}
+
 }  // namespace
+
+std::string ParseSbatchJobId(const std::string& parsable) {
+  std::size_t begin = 0, end = parsable.size();
+  while (begin < end && std::isspace(static_cast<unsigned char>(parsable[begin]))) ++begin;
+  while (end > begin && std::isspace(static_cast<unsigned char>(parsable[end - 1]))) --end;
+  const std::string text = parsable.substr(begin, end - begin);
+  const std::size_t semicolon = text.find(';');
+  const std::string id = text.substr(0, semicolon);
+  const std::string cluster = semicolon == std::string::npos ? "" : text.substr(semicolon + 1);
+  const bool id_ok = !id.empty() && id.size() <= 18 &&
+                     std::all_of(id.begin(), id.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const bool cluster_ok =
+      semicolon == std::string::npos ||
+      (!cluster.empty() && std::all_of(cluster.begin(), cluster.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      }));
+  if (id_ok && cluster_ok) return id;
+  std::string shown = text.substr(0, 80);
+  for (char& c : shown)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  throw std::runtime_error("sbatch printed '" + shown + (text.size() > 80 ? "...'" : "'") +
+                           ", not a job id (digits, optionally ;cluster)");
+}
 
 std::string ShellQuote(const std::string& word) {
   const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
@@ -38,11 +91,17 @@ std::string ShellQuote(const std::string& word) {
 fs::path SlurmDirectory(const fs::path& sweep_dir) { return sweep_dir / "slurm"; }
 
 void ValidateSlurmJobOptions(const SlurmJobOptions& o) {
-  if (o.tasks < 1) throw InputError("--tasks " + std::to_string(o.tasks) + ": must be at least 1");
-  if (o.cpus_per_task < 1)
-    throw InputError("--cpus-per-task " + std::to_string(o.cpus_per_task) + ": must be at least 1");
+  if (o.tasks < 1 || o.tasks > kMaxSlurmTasks)
+    throw InputError("--tasks " + std::to_string(o.tasks) + ": must be in [1, " +
+                     std::to_string(kMaxSlurmTasks) + "]");
+  if (o.cpus_per_task < 1 || o.cpus_per_task > kMaxSlurmCpusPerTask)
+    throw InputError("--cpus-per-task " + std::to_string(o.cpus_per_task) + ": must be in [1, " +
+                     std::to_string(kMaxSlurmCpusPerTask) + "]");
   if (!o.partition.empty()) CheckDirectiveValue("partition", o.partition);
-  if (!o.time.empty()) CheckDirectiveValue("time", o.time);
+  if (!o.time.empty() && !IsSbatchTime(o.time))
+    throw InputError(
+        "--time " + o.time +
+        ": not a Slurm time limit (MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS or UNLIMITED)");
   CheckDirectiveValue("job-name", o.job_name);
   const std::string logs = SlurmDirectory(o.dir).string();
   if (logs.find_first_of(" \t\n'\"\\%#") != std::string::npos)
@@ -113,11 +172,17 @@ SlurmScripts MakeSlurmScripts(const SlurmJobOptions& o) {
       array_script +
       ")\n"
       "array=${array%%;*}\n"
+      "# Only a job id goes on: sbatch printing anything else is an error, never a command line.\n"
+      "[[ \"${array}\" =~ ^[0-9]+$ ]] || { echo \"submit.sh: sbatch printed '${array}', not a job id\" >&2; "
+      "exit 1; }\n"
       "finalize=$(sbatch --parsable --dependency=afterany:\"${array}\" " +
       finalize_script +
       ")\n"
+      "finalize=${finalize%%;*}\n"
+      "[[ \"${finalize}\" =~ ^[0-9]+$ ]] || { echo \"submit.sh: sbatch printed '${finalize}', not a job id\" "
+      ">&2; exit 1; }\n"
       "echo \"array job ${array} (" +
-      tasks + " tasks), finalize job ${finalize%%;*}\"\n";
+      tasks + " tasks), finalize job ${finalize}\"\n";
   return out;
 }
 

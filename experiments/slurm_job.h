@@ -41,10 +41,22 @@ struct SlurmScripts {
 // Quotes one word for bash ('...' with ' written as '\'').
 std::string ShellQuote(const std::string& word);
 
-// InputError for options sbatch would refuse (tasks < 1, cpus < 1, a partition or time with spaces...).
+// Bounds of the array (docs/safety.md): Slurm's own MaxArraySize is far smaller by default (1001).
+inline constexpr int kMaxSlurmTasks = 100000;
+inline constexpr int kMaxSlurmCpusPerTask = 256;
+
+// InputError for options sbatch would refuse: tasks outside [1, kMaxSlurmTasks], cpus outside
+// [1, kMaxSlurmCpusPerTask], a partition with spaces or quotes, a time that is not sbatch --time syntax
+// (MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS, UNLIMITED or INFINITE).
+
 void ValidateSlurmJobOptions(const SlurmJobOptions& options);
 
 SlurmScripts MakeSlurmScripts(const SlurmJobOptions& options);
+
+// The job id in what `sbatch --parsable` printed: "1234" or "1234;cluster" (surrounding blank space
+// ignored) gives "1234"; anything else (empty, other text, a second line) is a std::runtime_error naming
+// what sbatch printed, sanitized to one line.
+std::string ParseSbatchJobId(const std::string& parsable);
 
 // The directory of the scripts and logs: DIR/slurm.
 std::filesystem::path SlurmDirectory(const std::filesystem::path& sweep_dir);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/output.h"
 #include "experiments/metrics_access.h"
+#include "experiments/run_metrics_file.h"
 #include "experiments/sweep_engine.h"
 
 namespace vigil::experiments {
@@ -13,6 +15,23 @@ namespace fs = std::filesystem;
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 double Ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
+
+// A run directory belongs to this plan only if the configuration it ran (its config.yaml, when it has one)
+// is the plan's for its cell and seed: a sweep.yaml swapped for another sweep's is refused here, instead of
+// tabulating runs under settings they did not run with. `planned` caches the cell's configuration.
+void CheckRunConfig(const fs::path& run_dir, const SweepSpec& spec, const SweepCell& cell, uint64_t seed,
+                    std::optional<RunConfig>* planned) {
+  const fs::path path = run_dir / "config.yaml";
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return;
+  if (!*planned) *planned = ResolveCellConfig(spec, cell);
+  RunConfig config = **planned;
+  config.seed = seed;
+  if (ReadFile(path) != config::ToYaml(config))
+    throw InputError(path.string() +
+                     ": not the configuration the sweep's plan gives this run (sweep.yaml replaced, or the "
+                     "run copied from another sweep); re-run the sweep, or restore its sweep.yaml");
+}
 }  // namespace
 
 double CellResult::PooledReTrans(std::size_t d) const { return Ratio(re_trans_weighted[d], re_n[d]); }
@@ -122,6 +141,7 @@ SweepAggregate AggregateSweep(const fs::path& dir, const SweepSpec& spec,
     cell.re_n.assign(distances_m.size(), 0.0);
     cell.re_trans_run_means.assign(distances_m.size(), {});
   }
+  std::vector<std::optional<RunConfig>> planned_configs(cells.size());
   for (const SweepRunRef& run : EnumerateRuns(spec, cells)) {
     CellResult& cell = agg.cells[run.cell];  // cells are group-major, method fastest: the same order
     ++agg.runs;
@@ -135,8 +155,8 @@ SweepAggregate AggregateSweep(const fs::path& dir, const SweepSpec& spec,
       if (visit) visit(run, cells[run.cell], nullptr);
       continue;
     }
-    const nlohmann::json metrics = nlohmann::json::parse(ReadFile(path), nullptr, false);
-    if (metrics.is_discarded()) throw InputError(path.string() + ": not valid JSON");
+    const nlohmann::json metrics = ReadRunMetrics(path.string(), run.seed);
+    CheckRunConfig(RunDirectory(dir, run.id), spec, cells[run.cell], run.seed, &planned_configs[run.cell]);
     AddRunMetrics(metrics, distances_m, &cell);
     if (IsFailed(metrics)) agg.failed_ids.push_back(run.id);
     if (IsDiverged(metrics)) agg.diverged_ids.push_back(run.id);

@@ -41,6 +41,13 @@ std::string ValidateFaultOptions(const FaultOptions& options, double gravity_mps
     return std::string(s.accel_range_g > 0.0 ? "saturation.accel_range_g" : "saturation.accel_range_mps2") +
            ": range " + FormatDouble(accel_range) + " m/s^2 must exceed gravity (" +
            FormatDouble(gravity_mps2) + " m/s^2): a sensor at rest would read saturated";
+  // A resolution below 1e-6 (m/s^2 or deg/s) would only round in the last digits of a double, and far
+  // below it the quantized values overflow: 0 (off) or at least that.
+  const QuantizationOptions& q = options.quantization;
+  if (q.accel_lsb_mps2 > 0.0 && q.accel_lsb_mps2 < kMinQuantizationLsb)
+    return "quantization.accel_lsb_mps2: 0 (no quantization) or at least 1e-06 m/s^2";
+  if (q.gyro_lsb_dps > 0.0 && q.gyro_lsb_dps < kMinQuantizationLsb)
+    return "quantization.gyro_lsb_dps: 0 (no quantization) or at least 1e-06 deg/s";
   const ScaleMisalignmentOptions& m = options.scale;
   struct Limited {
     const char* name;

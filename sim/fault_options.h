@@ -41,7 +41,9 @@ struct SaturationOptions {
   }
 };
 
-// Rounding of every sample to a multiple of the least significant bit. 0 means no quantization.
+// Rounding of every sample to a multiple of the least significant bit. 0 means no quantization; otherwise the
+// LSB is at least kMinQuantizationLsb (ValidateFaultOptions).
+inline constexpr double kMinQuantizationLsb = 1e-6;
 struct QuantizationOptions {
   double accel_lsb_mps2 = 0.0;  // [m/s^2]
   double gyro_lsb_dps = 0.0;    // [deg/s]
@@ -86,10 +88,11 @@ struct TimingFaultOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
-    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped", Bounds::Probability());
+    // At most half: beyond, what is left is no longer an IMU stream a run can read.
+    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped", Bounds::Closed(0.0, 0.5));
     v.Field("duplicate_rate", duplicate_rate,
             "probability per IMU sample that it is stamped with the previous sample's timestamp",
-            Bounds::Probability());
+            Bounds::Closed(0.0, 0.5));
     v.Field(
         "jitter_std_s", jitter_std_s,
         "std of the Gaussian timestamp jitter, clipped to +-0.45 IMU periods so that the order is kept [s]",

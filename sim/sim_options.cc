@@ -12,11 +12,13 @@ void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* opt
   }
 }
 
+// Shorter recordings have too few samples and frames for a run to read them.
+constexpr double kMinDuration_s = 0.5;
+
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
-  if (!(options.duration_s > 0.0))
-    throw InputError(origin +
-                     ": duration_s: must be > 0 (0, to the end of the trajectory, needs trajectory.type "
-                     "waypoints or recording)");
+  if (!(options.duration_s >= kMinDuration_s))
+    throw InputError(origin + ": duration_s: must be at least 0.5 s (0, to the end of the trajectory, needs " +
+                     "trajectory.type waypoints or recording)");
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);
   if (options.glitch.enabled && options.glitch.axes.empty())

@@ -211,8 +211,10 @@ struct GlitchOptions {
   void Visit(V& v) {
     using config::Bounds;
     v.Field("enabled", enabled, "inject glitches into the measured IMU stream");
-    v.Field("mean", mean, "mean mu of the N(mu, sigma) glitch offset [rad/s or m/s^2]");
-    v.Field("std", std, "standard deviation sigma of the glitch offset", Bounds::NonNegative());
+    // Bounded so that every glitched sample stays a value a dataset may hold (|IMU values| <= 1e6).
+    v.Field("mean", mean, "mean mu of the N(mu, sigma) glitch offset [rad/s or m/s^2]",
+            Bounds::Closed(-1e4, 1e4));
+    v.Field("std", std, "standard deviation sigma of the glitch offset", Bounds::Closed(0.0, 1e4));
     v.Field("rate", rate, "probability per IMU sample that a glitch starts", Bounds::Probability());
     v.EnumList("axes", axes,
                config::EnumNames<ImuAxis>{{"wx", ImuAxis::kWx},
@@ -240,9 +242,11 @@ struct SimOptions {
 
   template <class V>
   void Visit(V& v) {
+    // 0 or from 0.5 s (ValidateSimOptions): a shorter recording has too few samples and frames for a run.
     v.Field("duration_s", duration_s,
-            "simulated duration [s]; 0: to the end of the trajectory (types waypoints and recording)",
-            config::Bounds::NonNegative());
+            "simulated duration [s], 0 or from 0.5; 0: to the end of the trajectory (types waypoints and "
+            "recording)",
+            config::Bounds::Closed(0.0, 1e6));
     v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity g_W = (0, 0, -g) [m/s^2]",
             config::Bounds::Positive());
     v.Section("trajectory", trajectory, "body motion");

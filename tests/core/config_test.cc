@@ -168,5 +168,53 @@ TEST(Config, BlockScalarValuesGiveAOneLineError) {
   EXPECT_EQ(error.rfind(path + ":1: count:", 0), 0u) << error;
 }
 
+TEST(Config, RecursiveAliasesAreRefusedWithTheirLine) {
+  TempDir dir;
+  Outer o;
+  const std::string path = dir.File("sa.yaml", "count: 2\na: &a [*a]\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadFile(path, o); }),
+            path + ":2: a recursive alias (a node that contains itself)");
+  const std::string map = dir.File("sm.yaml", "inner: &m\n  rate: 0.5\n  self: *m\n");
+  EXPECT_NE(InputErrorOf([&] { LoadFile(map, o); }).find("recursive alias"), std::string::npos);
+  EXPECT_NE(InputErrorOf([&] {
+              ApplyOverride("inner.distances=&a [*a]", o);
+            }).find("--set inner.distances: a recursive alias"),
+            std::string::npos);
+}
+
+TEST(Config, NestingDeeperThanTheLimitIsRefused) {
+  TempDir dir;
+  Outer o;
+  const int depth = kMaxYamlDepth + 1;
+  const std::string path =
+      dir.File("deep.yaml", "a: " + std::string(depth, '[') + std::string(depth, ']') + "\n");
+  EXPECT_NE(InputErrorOf([&] {
+              LoadFile(path, o);
+            }).find(":1: nested deeper than " + std::to_string(kMaxYamlDepth)),
+            std::string::npos);
+  // A billion laughs: few lines, far too many values once the aliases are expanded.
+  std::string laughs = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 9; ++i)
+    laughs += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + std::string("*a") +
+              std::to_string(i - 1) + std::string(9, ',').replace(0, 9, "") + "]\n";
+  std::string wide = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 9; ++i) {
+    wide += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int k = 0; k < 10; ++k) wide += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    wide += "]\n";
+  }
+  const std::string bomb = dir.File("bomb.yaml", wide);
+  EXPECT_NE(InputErrorOf([&] { LoadFile(bomb, o); }).find("values once aliases are expanded"),
+            std::string::npos);
+}
+
+TEST(Config, ANullKeyIsNamedWithItsLine) {
+  TempDir dir;
+  Outer o;
+  const std::string path = dir.File("null.yaml", "count: 2\n~: 2\n");
+  EXPECT_EQ(InputErrorOf([&] { LoadFile(path, o); }),
+            path + ":2: ~: unknown key (a key must be a plain name)");
+}
+
 }  // namespace
 }  // namespace vigil::config

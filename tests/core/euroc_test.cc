@@ -84,9 +84,33 @@ TEST(EurocSensorYaml, BadValuesNameTheLine) {
   file.text.replace(at, 22, "resolution: [752]");
   EXPECT_EQ(InputErrorOf([&] { ReadEurocCameraSensorYaml(file); }),
             "sensor.yaml:17: resolution: expected a list of 2 numbers");
-  EXPECT_NE(InputErrorOf([&] { ReadEurocCameraSensorYaml({"s.yaml", "%YAML:1.0\nrate_hz: [\n"}); })
-                .find("s.yaml:"),
+  EXPECT_NE(InputErrorOf([&] {
+              ReadEurocCameraSensorYaml({"s.yaml", "%YAML:1.0\nrate_hz: [\n"});
+            }).find("s.yaml:"),
             std::string::npos);
+}
+
+TEST(EurocSensorYaml, ValuesBeyondPhysicalBoundsAreRefusedWithTheirLine) {
+  const TextFile published = ReadTextFile((kFixtures / "cam0_sensor.yaml").string());
+  auto error = [&](const std::string& from, const std::string& to) {
+    TextFile file = published;
+    file.path = "sensor.yaml";
+    const std::size_t at = file.text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    file.text.replace(at, from.size(), to);
+    return InputErrorOf([&] { ReadEurocCameraSensorYaml(file); });
+  };
+  EXPECT_EQ(error("458.654,", "4.9e-324,"),
+            "sensor.yaml:19: intrinsics: focal lengths fu, fv must be in [1, 1e+05] px");
+  EXPECT_EQ(error("367.215", "1e9"),
+            "sensor.yaml:19: intrinsics: principal point cu, cv must lie in the image (0 .. width, 0 .. "
+            "height px)");
+  EXPECT_EQ(error("[-0.28340811,", "[1e300,"),
+            "sensor.yaml:21: distortion_coefficients: k1, k2, p1, p2 must be within +-10 (got 1e+300)");
+  EXPECT_NE(error("-0.0216401454975", "1e300").find("sensor.yaml:7: T_BS: translation of"),
+            std::string::npos);
+  EXPECT_EQ(error("rate_hz: 20", "rate_hz: 1e-300"), "sensor.yaml:16: rate_hz: must be in [0.1, 1e+05] Hz");
+  EXPECT_EQ(error("rate_hz: 20", "rate_hz: 20"), "");
 }
 
 TEST(EurocImageList, ReadsRowsAndChecksTheFiles) {
@@ -183,9 +207,50 @@ TEST(EurocRecording, WrittenLayoutReadsBackAsPublishedEuroc) {
     EXPECT_EQ(rec.dataset.camera.distortion, d.camera.distortion);
     ASSERT_EQ(rec.images.size(), times.size());
     EXPECT_EQ(rec.images[3].t_ns, times[3]);
-    EXPECT_EQ(fs::path(rec.images[3].path), fs::absolute(EurocImageDir(tmp.path()) / EurocImageName(times[3])));
+    EXPECT_EQ(fs::path(rec.images[3].path),
+              fs::absolute(EurocImageDir(tmp.path()) / EurocImageName(times[3])));
     ASSERT_EQ(rec.dataset.frames.size(), times.size());  // empty frames at the image times
   }
+}
+
+TEST(EurocRecording, AnImageAfterTheLastImuSampleIsRefused) {
+  TempDir tmp;
+  const Dataset d = OneSecondDataset();
+  std::vector<int64_t> times = ImageTimes(d);
+  times.push_back(d.imu.back().t_ns + 1000000);
+  WriteEuroc(tmp.path(), d, EurocImuSensor{}, times);
+  WriteImages(tmp.path(), times);
+  const std::string error = InputErrorOf([&] { ReadRecording(tmp.path()); });
+  EXPECT_NE(error.find("data.csv:" + std::to_string(times.size() + 1) + ": image at " +
+                       std::to_string(times.back()) + " ns, after the last IMU sample"),
+            std::string::npos)
+      << error;
+}
+
+TEST(EurocRecording, ADanglingGroundTruthLinkIsAnErrorNotAbsentGroundTruth) {
+  TempDir tmp;
+  const Dataset d = OneSecondDataset();
+  WriteEuroc(tmp.path(), d, EurocImuSensor{}, ImageTimes(d));
+  WriteImages(tmp.path(), ImageTimes(d));
+  const fs::path gt = tmp.path() / "mav0" / "state_groundtruth_estimate0" / "data.csv";
+  fs::remove(gt);
+  fs::create_symlink(tmp.path() / "nowhere.csv", gt);
+  const std::string error = InputErrorOf([&] { ReadRecording(tmp.path()); });
+  EXPECT_NE(error.find("data.csv: a symbolic link to nothing"), std::string::npos) << error;
+}
+
+TEST(EurocRecording, AnImuWithAllTimestampsEqualNamesTheFileAndLine) {
+  TempDir tmp;
+  Dataset d = OneSecondDataset();
+  for (ImuSample& s : d.imu) s.t_ns = d.imu.front().t_ns;
+  WriteEuroc(tmp.path(), d, EurocImuSensor{}, {});
+  fs::remove_all(tmp.path() / "mav0" / "cam0");
+  const std::string error = InputErrorOf([&] { ReadRecording(tmp.path()); });
+  EXPECT_NE(error.find("imu0/data.csv:2: " + std::to_string(d.imu.size()) + " samples, all at timestamp " +
+                       std::to_string(d.imu.front().t_ns) +
+                       ": an IMU stream needs at least two distinct timestamps"),
+            std::string::npos)
+      << error;
 }
 
 TEST(EurocRecording, GroundTruthAndCameraAreOptional) {
@@ -208,16 +273,16 @@ TEST(EurocRecording, FeaturesBesideMav0AreReadAtTheImageTimes) {
   const std::vector<int64_t> times = ImageTimes(d);
   WriteEuroc(tmp.path(), d, EurocImuSensor{}, times);
   WriteImages(tmp.path(), times);
-  std::ofstream(tmp.path() / "features.csv")
-      << "#timestamp [ns],id,u [px],v [px]\n" << times[2] << ",7,100,120\n";
+  std::ofstream(tmp.path() / "features.csv") << "#timestamp [ns],id,u [px],v [px]\n"
+                                             << times[2] << ",7,100,120\n";
   const Recording rec = ReadRecording(tmp.path() / "mav0");
   EXPECT_TRUE(rec.has_features);
   ASSERT_EQ(rec.dataset.frames.size(), times.size());
   EXPECT_EQ(rec.dataset.frames[2].features.size(), 1u);
   EXPECT_TRUE(rec.dataset.frames[1].features.empty());
   // Undistorted pixels of a distorted camera may lie outside the image (barrel distortion).
-  std::ofstream(tmp.path() / "features.csv")
-      << "#timestamp [ns],id,u [px],v [px]\n" << times[2] << ",7,-40.5,120\n";
+  std::ofstream(tmp.path() / "features.csv") << "#timestamp [ns],id,u [px],v [px]\n"
+                                             << times[2] << ",7,-40.5,120\n";
   EXPECT_EQ(ReadRecording(tmp.path()).dataset.frames[2].features[0].uv_px.x(), -40.5);
 }
 

@@ -64,7 +64,9 @@ TEST(Output, CommittedDirectoryCarriesAManifestOfWhatVigilWrote) {
   WriteFileAtomic(staged.path() / "b.txt", "b");
   WriteFileAtomic(staged.path() / "a.txt", "a");
   staged.Commit();
-  EXPECT_EQ(ReadFile(out / kOutputManifest), std::string(kOutputManifestHeader) + "\na.txt\nb.txt\n");
+  EXPECT_EQ(ReadFile(out / kOutputManifest), std::string(kOutputManifestHeader) + "\na.txt\t" +
+                                                 EntryFingerprint(out / "a.txt") + "\nb.txt\t" +
+                                                 EntryFingerprint(out / "b.txt") + "\n");
   EXPECT_EQ(ReadOutputManifest(out), (std::vector<std::string>{"a.txt", "b.txt"}));
 }
 
@@ -80,6 +82,34 @@ TEST(Output, ForceRefusesADirectoryVigilDidNotWrite) {
   EXPECT_NE(InputErrorOf([&] { StagedDirectory s(out, true); }).find("not a vigil manifest"),
             std::string::npos);
   EXPECT_EQ(ReadFile(out / "mine.txt"), "precious");
+}
+
+TEST(Output, ForceKeepsEntriesAForgedOrStaleManifestLists) {
+  TempDir tmp;
+  const fs::path out = tmp.path() / "out";
+  fs::create_directories(out / "photos");
+  WriteFileAtomic(out / "photos" / "a.jpg", "precious");
+  WriteFileAtomic(out / "notes.txt", "precious");
+  // Names without fingerprints, a wrong fingerprint, a path outside the directory: none is vigil's.
+  WriteFileAtomic(
+      out / kOutputManifest,
+      std::string(kOutputManifestHeader) + "\nphotos\nnotes.txt\tfile 8 0000000000000000\n../x\tfile 1 0\n");
+  EXPECT_TRUE(ReadOutputManifest(out).empty());
+  {
+    StagedDirectory staged(out, true);
+    WriteFileAtomic(staged.path() / "result.txt", "new");
+    staged.Commit();
+  }
+  EXPECT_EQ(ReadFile(out / "photos" / "a.jpg"), "precious");
+  EXPECT_EQ(ReadFile(out / "notes.txt"), "precious");
+  // An entry vigil wrote and that changed since is kept too.
+  WriteFileAtomic(out / "result.txt", "edited by hand");
+  {
+    StagedDirectory staged(out, true);
+    WriteFileAtomic(staged.path() / "other.txt", "new");
+    staged.Commit();
+  }
+  EXPECT_EQ(ReadFile(out / "result.txt"), "edited by hand");
 }
 
 TEST(Output, ForceKeepsFilesVigilDidNotWrite) {

@@ -44,7 +44,7 @@ TEST(SlurmJob, ArrayScriptRunsOneShardPerTaskWithTheShardCountWrittenIn) {
 TEST(SlurmJob, BadOptionsAreRefused) {
   SlurmJobOptions o = Job();
   o.tasks = 0;
-  EXPECT_NE(InputErrorOf([&] { MakeSlurmScripts(o); }).find("--tasks 0: must be at least 1"),
+  EXPECT_NE(InputErrorOf([&] { MakeSlurmScripts(o); }).find("--tasks 0: must be in [1, 100000]"),
             std::string::npos);
   o = Job();
   o.cpus_per_task = 0;
@@ -55,6 +55,47 @@ TEST(SlurmJob, BadOptionsAreRefused) {
   o = Job();
   o.dir = "/shared/my out";
   EXPECT_NE(InputErrorOf([&] { MakeSlurmScripts(o); }).find("may not contain spaces"), std::string::npos);
+}
+
+TEST(SlurmJob, TaskCountsAndTimesBeyondWhatSlurmTakesAreRefused) {
+  SlurmJobOptions o = Job();
+  o.tasks = 1000000;
+  EXPECT_NE(InputErrorOf([&] { MakeSlurmScripts(o); }).find("--tasks 1000000: must be in [1, 100000]"),
+            std::string::npos);
+  for (const char* bad : {"abc", "1:2:3:4", "-5", "1-", "10:", "1-2:3:4:5", "12345"}) {
+    o = Job();
+    o.time = bad;
+    EXPECT_NE(InputErrorOf([&] { MakeSlurmScripts(o); }).find("not a Slurm time limit"), std::string::npos)
+        << bad;
+  }
+  for (const char* good : {"30", "30:00", "2:00:00", "1-0", "1-12:30", "1-12:30:00", "UNLIMITED"}) {
+    o = Job();
+    o.time = good;
+    EXPECT_EQ(InputErrorOf([&] { MakeSlurmScripts(o); }), "") << good;
+  }
+}
+
+TEST(SlurmJob, OnlyADigitJobIdIsTakenFromSbatch) {
+  EXPECT_EQ(ParseSbatchJobId("1234\n"), "1234");
+  EXPECT_EQ(ParseSbatchJobId("1234;cluster-a\n"), "1234");
+  for (const char* bad : {"", "\n", "1$(touch /tmp/pwned)", "12 34", "abc", "1234;", "1234;a b", "1;x;y",
+                          "Submitted batch job 1234", "1234\n5678"}) {
+    try {
+      ParseSbatchJobId(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("not a job id"), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(SlurmJob, SubmitScriptChecksEachJobIdBeforeUsingIt) {
+  const SlurmScripts s = MakeSlurmScripts(Job());
+  EXPECT_NE(s.submit.find("[[ \"${array}\" =~ ^[0-9]+$ ]] ||"), std::string::npos) << s.submit;
+  EXPECT_NE(s.submit.find("[[ \"${finalize}\" =~ ^[0-9]+$ ]] ||"), std::string::npos) << s.submit;
+  EXPECT_LT(s.submit.find("=~ ^[0-9]+$"), s.submit.find("--dependency"));
 }
 
 TEST(SlurmJob, ShellQuoteKeepsEveryWordOneWord) {
