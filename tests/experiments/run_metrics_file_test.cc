@@ -9,7 +9,7 @@ namespace {
 using testing::InputErrorOf;
 using testing::TempDir;
 
-const char* kGood =
+const char* kGoodMetrics =
     "{\n"
     "  \"status\": \"ok\",\n"
     "  \"seed\": 3,\n"
@@ -20,7 +20,7 @@ const char* kGood =
     "  \"new_key\": {\"anything\": -1}\n"
     "}\n";
 
-std::string Replaced(std::string text, const std::string& from, const std::string& to) {
+std::string MetricsWith(std::string text, const std::string& from, const std::string& to) {
   text.replace(text.find(from), from.size(), to);
   return text;
 }
@@ -32,31 +32,31 @@ std::string ErrorOf(const TempDir& tmp, const std::string& text, uint64_t seed =
 
 TEST(RunMetricsFile, ARunsOwnMetricsAreRead) {
   TempDir tmp;
-  EXPECT_EQ(ErrorOf(tmp, kGood), "");
+  EXPECT_EQ(ErrorOf(tmp, kGoodMetrics), "");
   // A run that failed before it started has only a status and a reason.
   EXPECT_EQ(ErrorOf(tmp, "{\"status\": \"failed\", \"failure_reason\": \"boom\"}"), "");
 }
 
 TEST(RunMetricsFile, AnotherRunsMetricsAreRefused) {
   TempDir tmp;
-  const std::string error = ErrorOf(tmp, kGood, 4);
+  const std::string error = ErrorOf(tmp, kGoodMetrics, 4);
   EXPECT_NE(error.find("metrics.json:3: seed: 3 is not this run's seed (4)"), std::string::npos) << error;
 }
 
 TEST(RunMetricsFile, CorruptValuesAreRefusedWithTheirLine) {
   TempDir tmp;
-  EXPECT_NE(ErrorOf(tmp, Replaced(kGood, "0.05", "-1")).find(":4: ate.trans_m.rmse: must be in [0, 1e+09]"),
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "-1")).find(":4: ate.trans_m.rmse: must be in [0, 1e+09]"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, Replaced(kGood, "0.05", "1e308")).find("ate.trans_m.rmse"), std::string::npos);
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "1e308")).find("ate.trans_m.rmse"), std::string::npos);
   EXPECT_NE(
-      ErrorOf(tmp, Replaced(kGood, "0.05", "\"x\"")).find("ate.trans_m.rmse: expected a number, got string"),
+      ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "\"x\"")).find("ate.trans_m.rmse: expected a number, got string"),
       std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, Replaced(kGood, "0.05", "[1]")).find("expected a number, got array"),
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "[1]")).find("expected a number, got array"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, Replaced(kGood, "\"flagged_samples\": 4", "\"flagged_samples\": 1.5"))
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "\"flagged_samples\": 4", "\"flagged_samples\": 1.5"))
                 .find(":6: detection.flagged_samples"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, Replaced(kGood, "\"ok\"", "\"fine\"")).find(":2: status"), std::string::npos);
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "\"ok\"", "\"fine\"")).find(":2: status"), std::string::npos);
   EXPECT_NE(ErrorOf(tmp, "[1, 2]").find("(top level): expected a JSON object, got array"), std::string::npos);
   EXPECT_NE(ErrorOf(tmp, "{\"status\": ").find("not valid JSON"), std::string::npos);
 }
