@@ -413,10 +413,11 @@ void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path
 void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path, int64_t t_ns,
                               const std::string& file, int line) {
   if (imu.empty()) return;
-  if (t_ns < imu.front().t_ns - kSensorSpanTolerance_ns || t_ns > imu.back().t_ns + kSensorSpanTolerance_ns)
+  if (t_ns < imu.front().t_ns || t_ns > imu.back().t_ns)
     throw InputError(Located(file, line,
-                             "timestamp " + std::to_string(t_ns) +
-                                 ": camera frame outside the IMU's time span; " + ImuSpan(imu, imu_path)));
+                             "timestamp " + std::to_string(t_ns) + " is outside the IMU's time span (" +
+                                 std::to_string(imu.front().t_ns) + " .. " + std::to_string(imu.back().t_ns) +
+                                 " ns, " + imu_path + "): a camera frame needs IMU samples on both sides"));
 }
 
 Dataset ReadDataset(const fs::path& dir) {
@@ -444,11 +445,7 @@ Dataset ReadDataset(const fs::path& dir) {
     const TextFile frames = ReadTextFile((dir / kFrames).string());
     frame_times = ReadFramesCsv(frames);
     for (std::size_t k = 0; k < frame_times.size(); ++k)
-      if (frame_times[k] < checks.min_t_ns || frame_times[k] > checks.max_t_ns)
-        throw InputError(Located(frames.path, static_cast<int>(k) + 2,
-                                 "timestamp " + std::to_string(frame_times[k]) +
-                                     " is outside the IMU's time span (" + std::to_string(checks.min_t_ns) +
-                                     " .. " + std::to_string(checks.max_t_ns) + ", imu.csv)"));
+      CheckCameraTimeInImuSpan(d.imu, kImu, frame_times[k], frames.path, static_cast<int>(k) + 2);
     checks.listed_times = true;
   }
   d.frames = ReadFeaturesCsv((dir / kFeatures).string(), frame_times, &checks);

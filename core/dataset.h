@@ -51,7 +51,7 @@ inline constexpr double kMaxAbsGroundTruthRate = 1e6;  // velocity [m/s] and bia
 // A ground truth whose position jumps faster than this between consecutive rows is rejected (a teleport: a
 // glued or mis-stamped file; the fastest platforms vigil models fly at tens of m/s).
 inline constexpr double kMaxGroundTruthSpeed_mps = 100.0;
-// How far the ground truth and the camera frames may reach beyond the IMU's time span (a recording's sensors
+// How far the ground truth may reach beyond the IMU's time span (a recording's sensors
 // start and stop a little apart; beyond this the recording is cut or its clocks disagree).
 inline constexpr int64_t kSensorSpanTolerance_ns = 100'000'000;  // 0.1 s
 
@@ -59,7 +59,8 @@ inline constexpr int64_t kSensorSpanTolerance_ns = 100'000'000;  // 0.1 s
 // (`groundtruth` may be empty; its row k is line k + 2 of its file).
 void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path,
                                const std::vector<NavState>& groundtruth, const std::string& groundtruth_path);
-// The same for one camera time, read at `file`:`line`.
+// InputError "FILE:LINE: ..." unless the camera time `t_ns`, read at `file`:`line`, lies inside the IMU's time
+// span (no tolerance: a frame needs IMU samples on both sides to be tied to the motion).
 void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path, int64_t t_ns,
                               const std::string& file, int line);
 

@@ -341,13 +341,6 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
       for (int c = 0; c < 4; ++c) d.camera.T_BC[4 * r + c] = T_IC.matrix()(r, c);
     rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages, check_image_files);
     rec.has_camera = true;
-    // An image after the last IMU sample has no motion to go with it: a list of another recording.
-    for (const CameraImage& image : rec.images)
-      if (!d.imu.empty() && image.t_ns > d.imu.back().t_ns)
-        throw InputError(Located(image.list_path, image.list_line,
-                                 "image at " + std::to_string(image.t_ns) +
-                                     " ns, after the last IMU sample (" + std::to_string(d.imu.back().t_ns) +
-                                     " ns in " + (imu_dir / kData).string() + ")"));
   }
   const fs::path gt = mav0 / kGroundTruth / kData;
   if (IsFile(gt)) {

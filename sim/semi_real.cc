@@ -52,16 +52,6 @@ std::vector<int64_t> ListedFrameTimes(const Recording& recording) {
   return times;
 }
 
-void CheckCameraTimesInImu(const Recording& recording, const std::string& imu_file) {
-  const ImuStream& imu = recording.dataset.imu;
-  for (const CameraImage& image : recording.images)
-    if (image.t_ns < imu.front().t_ns || image.t_ns > imu.back().t_ns)
-      throw InputError(Located(image.list_path, image.list_line,
-                               "imu.recording: camera time " + std::to_string(image.t_ns) +
-                                   " is outside the IMU's span (" + std::to_string(imu.front().t_ns) +
-                                   " .. " + std::to_string(imu.back().t_ns) + ", " + imu_file + ")"));
-}
-
 // The recorded IMU samples spanning [t0_ns, t1_ns]; throws when the IMU does not cover it.
 ImuStream ImuSpanning(const ImuStream& imu, int64_t t0_ns, int64_t t1_ns, const std::string& imu_file) {
   if (imu.front().t_ns > t0_ns)
@@ -130,7 +120,6 @@ RecordedWindow ReadRecordedWindow(const SimOptions& options) {
                      ": no camera (mav0/cam0/sensor.yaml or camera.yaml): a semi-real dataset uses the "
                      "recording's camera");
   const std::string imu_file = ImuFileOf(dir, recording);
-  CheckCameraTimesInImu(recording, imu_file);
   const std::vector<NavState>& gt = recording.dataset.groundtruth;
   const int64_t gt0 = gt.front().t_ns, gt1 = gt.back().t_ns;
   const int64_t start_ns = gt0 + SToNs(options.imu.recording_start_s);

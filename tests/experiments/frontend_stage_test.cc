@@ -65,7 +65,8 @@ TEST(FrontendStage, BadImagesNameTheFileAndLine) {
   std::vector<CameraImage> garbage = files;
   garbage[2].path = dir.File("bad.png", "not a png");
   EXPECT_EQ(InputErrorOf([&] { TrackImageFiles(garbage, camera, options); }),
-            files[2].list_path + ":4: " + garbage[2].path + ": cannot read the image");
+            files[2].list_path + ":4: " + garbage[2].path +
+                ": not a PNG file (cam0 images must be 8-bit grayscale PNG)");
 
   EXPECT_EQ(InputErrorOf([&] { TrackImageFiles(files, Camera(640, 240), options); }),
             files[0].list_path + ":2: " + files[0].path +

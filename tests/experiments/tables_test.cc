@@ -147,11 +147,11 @@ TEST(Regression, MalformedBaselineIsAnInputError) {
   TempDir dir;
   EXPECT_EQ(
       InputErrorOf([&] { ReadBaseline(dir.File("b.json", "{\"format\": \"other\"}"), nullptr, nullptr); }),
-      (dir.path() / "b.json").string() + ": format: expected \"vigil-regress-baseline-1\"");
+      (dir.path() / "b.json").string() + ":1: format: expected \"vigil-regress-baseline-1\"");
   const std::string p = dir.File("c.json", "{\"format\": \"vigil-regress-baseline-1\", \"cells\": []}");
   std::vector<RegressionCell> cells;
   RegressionTolerance tol;
-  EXPECT_NE(InputErrorOf([&] { ReadBaseline(p, &cells, &tol); }).find("c.json: cells/tolerance: "),
+  EXPECT_NE(InputErrorOf([&] { ReadBaseline(p, &cells, &tol); }).find("c.json:1: tolerance: "),
             std::string::npos);
 }
 

@@ -149,7 +149,7 @@ TEST(RenderRun, RealRunDirectory) {
 TEST(RenderRun, DatasetRunIsPlottedFromWhatItRecorded) {
   vigil::testing::TempDir tmp;
   const std::string paper = std::string(VIGIL_SOURCE_DIR) + "/configs/paper.yaml";
-  const std::vector<std::string> overrides = {"duration_s=3", "glitch.enabled=true", "glitch.mean=3",
+  const std::vector<std::string> overrides = {"duration_s=3", "glitch.enabled=true", "glitch.mean=30",
                                               "glitch.std=1", "detector.type=threshold"};
   experiments::RunConfig config = experiments::LoadRunConfig(paper, overrides);
   sim::SimulateToDirectory(config.sim, 9, config::ToYaml(config), tmp.path() / "ds", false);
@@ -160,9 +160,11 @@ TEST(RenderRun, DatasetRunIsPlottedFromWhatItRecorded) {
   const Dataset recorded = ReadDataset(tmp.path() / "ds");
   const experiments::ImuAxisRecord imu =
       experiments::ReadImuAxisCsv((tmp.path() / "run" / experiments::kImuAxisFile).string());
-  // The detector as the run resolved it (the paper's threshold calibrates its bounds on clean data first).
+  // The detector as the run resolved it (the paper's threshold calibrates its bounds on the recording's own
+  // clean stream first).
+  const experiments::CalibrationReference reference{recorded.imu_clean, "imu_clean.csv"};
   const detectors::DetectionResult applied =
-      detectors::DetectAndMitigate(experiments::ResolveDetectorOptions(config), recorded.imu);
+      detectors::DetectAndMitigate(experiments::ResolveDetectorOptions(config, &reference), recorded.imu);
   EXPECT_EQ(imu.axis, ImuAxis::kAz);
   ASSERT_EQ(imu.raw.size(), recorded.imu.size());
   ASSERT_EQ(imu.clean.size(), recorded.imu.size());

@@ -253,7 +253,7 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
   ResolveDurationToEnd(&o);
   EXPECT_EQ(o.duration_s, 0.0);
   EXPECT_EQ(
-      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }).rfind("c.yaml: duration_s: must be > 0", 0), 0u);
+      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }).rfind("c.yaml: duration_s: must be at least 0.5 s", 0), 0u);
 }
 
 struct RmsIntegrationError {
