@@ -75,9 +75,10 @@ TEST_F(ReliabilityCli, CleanRefusesABrokenImuSensorYaml) {
   for (int k = 0; k < 400; ++k) rows += std::to_string(1000000000 + k * 5000000LL) + ",0,0,0,0,0,9.81\n";
   fs::create_directories(tmp_.path() / "rec/mav0/imu0");
   tmp_.File("rec/mav0/imu0/data.csv", rows);
-  tmp_.File("rec/mav0/imu0/sensor.yaml",
-            "%YAML:1.0\nsensor_type: imu\nT_BS:\n  cols: 4\n  rows: 4\n  data: [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, "
-            "0, 0, 0, 0, 1]\nrate_hz: .nan\ngyroscope_noise_density: 1.6968e-04\n");
+  tmp_.File(
+      "rec/mav0/imu0/sensor.yaml",
+      "%YAML:1.0\nsensor_type: imu\nT_BS:\n  cols: 4\n  rows: 4\n  data: [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, "
+      "0, 0, 0, 0, 1]\nrate_hz: .nan\ngyroscope_noise_density: 1.6968e-04\n");
   Expect("clean " + Path("rec") + " -o " + Path("out") + " --detector hampel", 2,
          "rec/mav0/imu0/sensor.yaml:7: rate_hz: expected a finite number");
   EXPECT_FALSE(fs::exists(Path("out")));
