@@ -44,16 +44,17 @@ RecordedTrajectory::RecordedTrajectory(std::vector<TimedPose> poses, const Recor
       end_time_s_(static_cast<double>(Checked(poses_).back().t_ns - poses_.front().t_ns) / 1e9),
       spline_(Fitted(poses_, options)) {}
 
-TrajectoryState RecordedTrajectory::StateAt(double t_s) const {
-  const CumulativeBSpline::Sample s = spline_.Evaluate(t_s);
+TrajectoryState StateOf(const CumulativeBSpline::Sample& sample) {
   TrajectoryState x;
-  x.p_W = s.p_W;
-  x.v_W = s.v_W;
-  x.a_W = s.a_W;
-  x.q_WB = s.q_WB;
-  x.w_B = s.w_B;
+  x.p_W = sample.p_W;
+  x.v_W = sample.v_W;
+  x.a_W = sample.a_W;
+  x.q_WB = sample.q_WB;
+  x.w_B = sample.w_B;
   return x;
 }
+
+TrajectoryState RecordedTrajectory::StateAt(double t_s) const { return StateOf(spline_.Evaluate(t_s)); }
 
 FitReport RecordedTrajectory::Fit() const {
   FitReport r;

@@ -31,6 +31,9 @@ struct FitReport {
   double velocity_rms_mps = 0.0, velocity_max_mps = 0.0;
 };
 
+// The kinematic state a spline sample stands for.
+TrajectoryState StateOf(const CumulativeBSpline::Sample& sample);
+
 class RecordedTrajectory final : public TrajectoryModel {
  public:
   // At least 2 poses with increasing times (InputError otherwise).

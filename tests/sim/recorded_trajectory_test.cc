@@ -44,16 +44,7 @@ void ExpectDerivativesMatchFiniteDifferences(const TrajectoryModel& m, double t0
 class SplineModel final : public TrajectoryModel {
  public:
   explicit SplineModel(CumulativeBSpline s) : spline_(std::move(s)) {}
-  TrajectoryState StateAt(double t) const override {
-    const CumulativeBSpline::Sample s = spline_.Evaluate(t);
-    TrajectoryState x;
-    x.p_W = s.p_W;
-    x.v_W = s.v_W;
-    x.a_W = s.a_W;
-    x.q_WB = s.q_WB;
-    x.w_B = s.w_B;
-    return x;
-  }
+  TrajectoryState StateAt(double t) const override { return StateOf(spline_.Evaluate(t)); }
   double EndTime() const override { return spline_.EndTime(); }
 
  private:
@@ -252,8 +243,10 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
   o.trajectory.type = TrajectoryType::kEllipse;
   ResolveDurationToEnd(&o);
   EXPECT_EQ(o.duration_s, 0.0);
-  EXPECT_EQ(
-      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }).rfind("c.yaml: duration_s: must be at least 0.5 s", 0), 0u);
+  EXPECT_EQ(InputErrorOf([&] {
+              ValidateSimOptions(o, "c.yaml");
+            }).rfind("c.yaml: duration_s: must be at least 0.5 s", 0),
+            0u);
 }
 
 struct RmsIntegrationError {
