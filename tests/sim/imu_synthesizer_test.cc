@@ -8,36 +8,10 @@
 #include "core/so3.h"
 #include "sim/ellipse_trajectory.h"
 #include "sim/rescue_trajectory.h"
+#include "tests/sim/midpoint_integration.h"
 
 namespace vigil::sim {
 namespace {
-
-struct IntegrationError {
-  double p_m = 0, v_mps = 0, rot_rad = 0;
-};
-
-// Dead-reckons the IMU with the midpoint rule from the first ground-truth state (biases from the ground
-// truth, zero here) and returns the largest deviation from the ground truth over the whole stream.
-IntegrationError IntegrateMidpoint(const ImuSynthesis& s, double g) {
-  const Eigen::Vector3d g_W(0, 0, -g);
-  Eigen::Vector3d p = s.groundtruth[0].p_W, v = s.groundtruth[0].v_W;
-  Eigen::Quaterniond q = s.groundtruth[0].q_WB;
-  IntegrationError e;
-  for (std::size_t k = 0; k + 1 < s.imu.size(); ++k) {
-    const ImuSample &m0 = s.imu[k], &m1 = s.imu[k + 1];
-    const double dt = NsToS(m1.t_ns - m0.t_ns);
-    const Eigen::Quaterniond q1 = (q * ExpQ(0.5 * (m0.w_B + m1.w_B) * dt)).normalized();
-    const Eigen::Vector3d a_W = 0.5 * (q * m0.a_B + q1 * m1.a_B) + g_W;
-    p += v * dt + 0.5 * a_W * dt * dt;
-    v += a_W * dt;
-    q = q1;
-    const NavState& gt = s.groundtruth[k + 1];
-    e.p_m = std::max(e.p_m, (p - gt.p_W).norm());
-    e.v_mps = std::max(e.v_mps, (v - gt.v_W).norm());
-    e.rot_rad = std::max(e.rot_rad, AngleOf(gt.q_WB.conjugate() * q));
-  }
-  return e;
-}
 
 ImuOptions Ideal(double rate_hz) {
   ImuOptions o;

@@ -12,6 +12,7 @@
 #include "sim/ellipse_trajectory.h"
 #include "sim/imu_synthesizer.h"
 #include "tests/core/test_util.h"
+#include "tests/sim/midpoint_integration.h"
 
 namespace vigil::sim {
 namespace {
@@ -249,39 +250,6 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
             0u);
 }
 
-struct RmsIntegrationError {
-  double p_rms_m = 0, v_rms_mps = 0, rot_rms_deg = 0, p_max_m = 0;
-};
-
-// Dead-reckons an ideal IMU with the midpoint rule from the first ground-truth state; rms over all samples.
-RmsIntegrationError IntegrateMidpointRms(const ImuSynthesis& s, double g) {
-  const Eigen::Vector3d g_W(0, 0, -g);
-  Eigen::Vector3d p = s.groundtruth[0].p_W, v = s.groundtruth[0].v_W;
-  Eigen::Quaterniond q = s.groundtruth[0].q_WB;
-  double ss_p = 0, ss_v = 0, ss_r = 0;
-  RmsIntegrationError e;
-  for (std::size_t k = 0; k + 1 < s.imu.size(); ++k) {
-    const ImuSample &m0 = s.imu[k], &m1 = s.imu[k + 1];
-    const double dt = NsToS(m1.t_ns - m0.t_ns);
-    const Eigen::Quaterniond q1 = (q * ExpQ(0.5 * (m0.w_B + m1.w_B) * dt)).normalized();
-    const Eigen::Vector3d a_W = 0.5 * (q * m0.a_B + q1 * m1.a_B) + g_W;
-    p += v * dt + 0.5 * a_W * dt * dt;
-    v += a_W * dt;
-    q = q1;
-    const NavState& gt = s.groundtruth[k + 1];
-    ss_p += (p - gt.p_W).squaredNorm();
-    ss_v += (v - gt.v_W).squaredNorm();
-    const double r = AngleOf(gt.q_WB.conjugate() * q) * 180.0 / kPi;
-    ss_r += r * r;
-    e.p_max_m = std::max(e.p_max_m, (p - gt.p_W).norm());
-  }
-  const double n = static_cast<double>(s.imu.size() - 1);
-  e.p_rms_m = std::sqrt(ss_p / n);
-  e.v_rms_mps = std::sqrt(ss_v / n);
-  e.rot_rms_deg = std::sqrt(ss_r / n);
-  return e;
-}
-
 // The whole V1_01 ground truth (2,895 poses at 20 Hz, 145 s; roll near +-pi throughout). Measured: position
 // rms 1.1e-5 m (max 7.6e-5), rotation rms 0.0059 deg (max 0.025), velocity rms 4.6 mm/s (max 0.05 m/s)
 // against EuRoC's own velocities, which the fit never sees.
@@ -312,13 +280,13 @@ TEST(RecordedTrajectoryEuroc, IdealImuIntegratesBackToTheRecording) {
   ImuOptions imu;
   imu.noise.enabled = false;
   imu.rate_hz = 200.0;
-  const RmsIntegrationError e200 = IntegrateMidpointRms(SynthesizeImu(m, imu, m.EndTime(), 9.81, 1), 9.81);
+  const IntegrationError e200 = IntegrateMidpoint(SynthesizeImu(m, imu, m.EndTime(), 9.81, 1), 9.81);
   imu.rate_hz = 400.0;
-  const RmsIntegrationError e400 = IntegrateMidpointRms(SynthesizeImu(m, imu, m.EndTime(), 9.81, 1), 9.81);
+  const IntegrationError e400 = IntegrateMidpoint(SynthesizeImu(m, imu, m.EndTime(), 9.81, 1), 9.81);
   std::printf(
       "V1_01 ideal IMU, midpoint over %.1f s: 200 Hz rms p %.3g m (max %.3g) v %.3g m/s R %.3g deg; "
       "400 Hz rms p %.3g m v %.3g m/s R %.3g deg\n",
-      m.EndTime(), e200.p_rms_m, e200.p_max_m, e200.v_rms_mps, e200.rot_rms_deg, e400.p_rms_m, e400.v_rms_mps,
+      m.EndTime(), e200.p_rms_m, e200.p_m, e200.v_rms_mps, e200.rot_rms_deg, e400.p_rms_m, e400.v_rms_mps,
       e400.rot_rms_deg);
   EXPECT_LT(e200.p_rms_m, 0.25);
   EXPECT_LT(e200.v_rms_mps, 0.006);
