@@ -40,7 +40,10 @@ const std::vector<cv::Mat>& Sequence() {
 void BM_TrackFrame(benchmark::State& state) {
   cv::setNumThreads(1);
   FeatureTrackerOptions options;
-  TrackerCamera camera;
+  CameraModel camera;  // 640 x 480, focal length 460 px, principal point (320, 240)
+  camera.height = 480;
+  camera.cx = 320.0;
+  camera.cy = 240.0;
   switch (state.range(0)) {
     case 1: options.backward_check = true; break;
     case 2: options.clahe = true; break;

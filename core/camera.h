@@ -7,7 +7,8 @@
 // Lens distortion (optional, `distortion`: radial-tangential k1, k2, p1, p2, EuRoC's and OpenCV's model)
 // applies to the images only: an image pixel is Distort()ed from the pinhole pixel of the formula above.
 // Project / Normalize and every feature track (features.csv) are pinhole, i.e. undistorted pixels; a
-// front-end tracking raw image pixels maps them with UndistortPixel before writing them.
+// front-end tracking raw image pixels maps them to pinhole pixels before writing them (UndistortPixel, or
+// frontend/point_undistorter.h: OpenCV's inversion of this same model, as vigil's KLT tracker does).
 //   distorted normalized (x_d, y_d) of undistorted (x, y), r^2 = x^2 + y^2:
 //   x_d = x (1 + k1 r^2 + k2 r^4) + 2 p1 x y + p2 (r^2 + 2 x^2)
 //   y_d = y (1 + k1 r^2 + k2 r^4) + p1 (r^2 + 2 y^2) + 2 p2 x y

@@ -1,6 +1,5 @@
 #include "experiments/frontend_stage.h"
 
-#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -11,26 +10,13 @@
 
 namespace vigil::experiments {
 
-frontend::TrackerCamera TrackerCameraOf(const CameraModel& camera) {
-  frontend::TrackerCamera c;
-  c.width = camera.width;
-  c.height = camera.height;
-  c.fx = camera.fx;
-  c.fy = camera.fy;
-  c.cx = camera.cx;
-  c.cy = camera.cy;
-  if (camera.distortion.size() == c.distortion.size())
-    std::copy(camera.distortion.begin(), camera.distortion.end(), c.distortion.begin());
-  return c;
-}
-
 TrackedFeatures TrackImages(std::size_t count,
                             const std::function<std::pair<int64_t, cv::Mat>(std::size_t)>& image_at,
                             const std::function<std::string(std::size_t)>& describe,
                             const CameraModel& camera, const frontend::FeatureTrackerOptions& options) {
   using Clock = std::chrono::steady_clock;
   TrackedFeatures out;
-  frontend::FeatureTracker tracker(options, TrackerCameraOf(camera));
+  frontend::FeatureTracker tracker(options, camera);
   for (std::size_t i = 0; i < count; ++i) {
     const auto [t_ns, image] = image_at(i);
     if (image.cols != camera.width || image.rows != camera.height)

@@ -26,9 +26,6 @@ struct TrackedFeatures {
   double seconds = 0.0;  // wall time of tracking (image decoding excluded)
 };
 
-// The tracker's view of a camera: size, intrinsics and lens distortion.
-frontend::TrackerCamera TrackerCameraOf(const CameraModel& camera);
-
 // Tracks `count` images given in time order by `image_at(i)` (timestamp, 8-bit grayscale image of the
 // camera's size: InputError otherwise, with `describe(i)` naming the image).
 TrackedFeatures TrackImages(std::size_t count, const std::function<std::pair<int64_t, cv::Mat>(std::size_t)>& image_at,

@@ -22,7 +22,7 @@ constexpr double kPublishSlack = 0.9;
 
 }  // namespace
 
-FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options, const TrackerCamera& camera)
+FeatureTracker::FeatureTracker(const FeatureTrackerOptions& options, const CameraModel& camera)
     : options_(options), camera_(camera), undistorter_(camera) {
   if (options_.clahe)
     clahe_ = cv::createCLAHE(options_.clahe_clip_limit, cv::Size(options_.clahe_tiles, options_.clahe_tiles));

@@ -41,6 +41,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/camera.h"
 #include "core/types.h"
 #include "frontend/affine_patch_aligner.h"
 #include "frontend/feature_tracker_options.h"
@@ -64,7 +65,7 @@ struct TrackerStats {
 
 class FeatureTracker {
  public:
-  FeatureTracker(const FeatureTrackerOptions& options, const TrackerCamera& camera);
+  FeatureTracker(const FeatureTrackerOptions& options, const CameraModel& camera);
 
   // Feeds the next image (8-bit, one channel, of the camera's size; timestamps strictly increasing). Returns the
   // frame's observations (ordered by track id) when the frame is published, nothing otherwise. Throws
@@ -72,7 +73,7 @@ class FeatureTracker {
   std::optional<CameraFrame> Track(const cv::Mat& image, int64_t t_ns);
 
   const TrackerStats& stats() const { return stats_; }
-  const TrackerCamera& camera() const { return camera_; }
+  const CameraModel& camera() const { return camera_; }
 
  private:
   struct TrackState {
@@ -101,7 +102,7 @@ class FeatureTracker {
   bool InsideImage(const cv::Point2f& p) const;
 
   FeatureTrackerOptions options_;
-  TrackerCamera camera_;
+  CameraModel camera_;
   PointUndistorter undistorter_;
   cv::Ptr<cv::CLAHE> clahe_;
   std::vector<cv::Mat> previous_pyramid_;  // of the previous image (cv::buildOpticalFlowPyramid)

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/core/euroc_cam0.h"
+
 namespace vigil {
 namespace {
 
@@ -44,17 +46,7 @@ TEST(Camera, RejectsImproperRotation) {
 namespace vigil {
 namespace {
 
-CameraModel EurocCam0() {
-  CameraModel cam;
-  cam.width = 752;
-  cam.height = 480;
-  cam.fx = 458.654;
-  cam.fy = 457.296;
-  cam.cx = 367.215;
-  cam.cy = 248.375;
-  cam.distortion = {-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05};
-  return cam;
-}
+using vigil::testing::EurocCam0;
 
 TEST(CameraDistortion, NoneByDefaultLeavesPixelsUnchanged) {
   const CameraModel cam;

@@ -4,8 +4,8 @@
 
 #include "detectors/detection_metrics.h"
 #include "detectors/template_library.h"
-#include "synthetic_imu.h"
 #include "tests/core/test_util.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
@@ -13,23 +13,16 @@ namespace {
 // Every detector: one output per input, timestamps unchanged, bounded latency, and the same output whether
 // the stream is consumed sample by sample or as a whole.
 TEST(Detector, EveryDetectorStreamsEverySampleOnceWithBoundedLatency) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
-  ImuStream raw = testing::SyntheticImu(4, 1234);
-  testing::InjectGlitches(&raw, 4, 50.0, 10.0, 0.02);
+  const TemplateLibrary library = testing::SyntheticTemplates();
+  const ImuStream raw = testing::Glitched(4, 1234, 50.0, 10.0, 0.02).raw;
   for (const auto& [name, type] : DetectorTypeNames()) {
-    DetectorOptions options;
-    options.type = type;
+    SCOPED_TRACE(name);
+    const DetectorOptions options = testing::DetectorOf(type);
     const std::unique_ptr<Detector> detector = MakeDetector(options, &library);
-    std::vector<DetectedSample> out;
-    for (std::size_t t = 0; t < raw.size(); ++t) {
-      detector->Push(raw[t], &out);
-      ASSERT_LE(static_cast<int>(t + 1 - out.size()), detector->latency_samples()) << name;
-    }
-    detector->Finish(&out);
+    const std::vector<DetectedSample> out = testing::StreamThrough(*detector, raw);
     ASSERT_EQ(out.size(), raw.size()) << name;
     const DetectionResult whole = DetectAndMitigate(options, raw, &library);
     for (std::size_t t = 0; t < raw.size(); ++t) {
-      ASSERT_EQ(out[t].sample.t_ns, raw[t].t_ns) << name;
       ASSERT_EQ(whole.cleaned[t].t_ns, raw[t].t_ns) << name;
       ASSERT_EQ(whole.cleaned[t].a_B, out[t].sample.a_B) << name;
       ASSERT_EQ(whole.flagged[t], out[t].flagged_axes != 0 ? 1 : 0) << name;
@@ -50,15 +43,10 @@ TEST(Detector, NoneFlagsNothingAndChangesNothing) {
 
 // N(0, 1) glitches sit inside the sensor noise: no detector should raise many alarms on them.
 TEST(Detector, SmallGlitchesRaiseFewFalseAlarms) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
-  const ImuStream clean = testing::SyntheticImu(2, 4001);
-  ImuStream raw = clean;
-  const auto glitches = testing::InjectGlitches(&raw, 2, 0.0, 1.0, 0.01);
+  const TemplateLibrary library = testing::SyntheticTemplates();
+  const testing::GlitchedRun run = testing::Glitched(2, 4001, 0.0, 1.0, 0.01);
   for (DetectorType type : {DetectorType::kRelativeThreshold, DetectorType::kDtw}) {
-    DetectorOptions options;
-    options.type = type;
-    const DetectionMetrics m =
-        EvaluateDetection(raw, DetectAndMitigate(options, raw, &library), glitches, clean);
+    const DetectionMetrics m = testing::Evaluate(testing::DetectorOf(type), run, &library);
     EXPECT_LT(m.false_positive_rate, 0.02) << static_cast<int>(type);
   }
 }
@@ -94,10 +82,9 @@ namespace vigil::detectors {
 namespace {
 
 TEST(Detector, EmptyAndTinyStreams) {
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw());
+  const TemplateLibrary library = testing::SyntheticTemplates();
   for (const auto& [name, type] : DetectorTypeNames()) {
-    DetectorOptions options;
-    options.type = type;
+    const DetectorOptions options = testing::DetectorOf(type);
     EXPECT_TRUE(DetectAndMitigate(options, {}, &library).cleaned.empty()) << name;
     const ImuStream tiny = testing::SyntheticImu(1, 5);  // shorter than a DTW slice and a Hampel window
     const DetectionResult r = DetectAndMitigate(options, tiny, &library);

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "detectors/detection_metrics.h"
-#include "synthetic_imu.h"
 #include "tests/core/test_util.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
@@ -14,27 +14,19 @@ namespace {
 // Templates from one synthetic clean run, judged on runs with other seeds (no leakage).
 class DtwDetectorTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    library_ =
-        new TemplateLibrary(BuildTemplates(testing::SyntheticImu(1000, 4001), testing::NormalizedDtw()));
-  }
+  static void SetUpTestSuite() { library_ = new TemplateLibrary(testing::SyntheticTemplates()); }
   static void TearDownTestSuite() { delete library_; }
-  static DetectorOptions Options() {
-    DetectorOptions o;
-    o.type = DetectorType::kDtw;
-    return o;
-  }
+  static DetectorOptions Options() { return testing::DetectorOf(DetectorType::kDtw); }
   static TemplateLibrary* library_;
 };
 TemplateLibrary* DtwDetectorTest::library_ = nullptr;
 
 TEST_F(DtwDetectorTest, FindsLargeGlitchesAndKeepsTheSliceLowFrequencyContent) {
   for (uint64_t seed : {1, 2}) {
-    const ImuStream imu_clean = testing::SyntheticImu(seed, 4001);
-    ImuStream raw = imu_clean;
-    const auto glitches = testing::InjectGlitches(&raw, seed, 50.0, 10.0, 0.01);
+    const testing::GlitchedRun run = testing::Glitched(seed, 4001, 50.0, 10.0, 0.01);
+    const ImuStream& raw = run.raw;
     const DetectionResult r = DetectAndMitigate(Options(), raw, library_);
-    const DetectionMetrics m = EvaluateDetection(raw, r, glitches, imu_clean);
+    const DetectionMetrics m = EvaluateDetection(raw, r, run.glitches, run.clean);
     EXPECT_GE(m.recall, 0.99) << seed;
     // DTW replaces a whole slice around each spike: right per flagged segment, mostly clean per sample.
     EXPECT_GE(m.segment_f1, 0.9) << seed;
@@ -45,7 +37,7 @@ TEST_F(DtwDetectorTest, FindsLargeGlitchesAndKeepsTheSliceLowFrequencyContent) {
     int replaced = 0;
     for (std::size_t t = 0; t < raw.size(); ++t) {
       if (!r.flagged[t]) continue;
-      bias += r.cleaned[t].a_B.z() - imu_clean[t].a_B.z();
+      bias += r.cleaned[t].a_B.z() - run.clean[t].a_B.z();
       ++replaced;
     }
     ASSERT_GT(replaced, 0);
@@ -65,14 +57,8 @@ TEST_F(DtwDetectorTest, StreamsWithOneSliceOfLatencyAndJudgesTheTail) {
   EXPECT_EQ(detector.latency_samples(), 39);
   ImuStream imu = testing::SyntheticImu(2, 4001 + 17);
   imu[4010].a_B.z() += 60.0;  // in the incomplete last slice
-  std::vector<DetectedSample> out;
-  for (std::size_t t = 0; t < imu.size(); ++t) {
-    detector.Push(imu[t], &out);
-    EXPECT_LE(static_cast<int>(t + 1 - out.size()), detector.latency_samples());
-  }
-  detector.Finish(&out);
+  const std::vector<DetectedSample> out = testing::StreamThrough(detector, imu);
   ASSERT_EQ(out.size(), imu.size());
-  for (std::size_t t = 0; t < imu.size(); ++t) ASSERT_EQ(out[t].sample.t_ns, imu[t].t_ns);
   EXPECT_NE(out[4010].flagged_axes, 0);
   EXPECT_LT(std::abs(out[4010].sample.a_B.z() - imu[4009].a_B.z()), 3.0);
 }
@@ -80,7 +66,7 @@ TEST_F(DtwDetectorTest, StreamsWithOneSliceOfLatencyAndJudgesTheTail) {
 TEST_F(DtwDetectorTest, AccelerometerOnlyLibraryLeavesTheGyroAlone) {
   DtwOptions options;
   options.dims = 3;
-  const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), options);
+  const TemplateLibrary library = testing::SyntheticTemplates(options);
   ImuStream raw = testing::SyntheticImu(3, 4001);
   raw[100].a_B.z() += 50.0;
   DetectorOptions det = Options();
@@ -108,14 +94,9 @@ TEST(DtwNormalization, EveryChoiceFindsLargeGlitches) {
   for (const auto& [name, normalization] : SliceNormalizationNames()) {
     DtwOptions options;
     options.normalization = normalization;
-    const TemplateLibrary library = BuildTemplates(testing::SyntheticImu(1000, 4001), options);
-    const ImuStream imu_clean = testing::SyntheticImu(1, 4001);
-    ImuStream raw = imu_clean;
-    const auto glitches = testing::InjectGlitches(&raw, 1, 50.0, 10.0, 0.01);
-    DetectorOptions det;
-    det.type = DetectorType::kDtw;
-    const DetectionMetrics m =
-        EvaluateDetection(raw, DetectAndMitigate(det, raw, &library), glitches, imu_clean);
+    const TemplateLibrary library = testing::SyntheticTemplates(options);
+    const DetectionMetrics m = testing::Evaluate(testing::DetectorOf(DetectorType::kDtw),
+                                                 testing::Glitched(1, 4001, 50.0, 10.0, 0.01), &library);
     EXPECT_GE(m.recall, 0.95) << name;
     EXPECT_LT(m.imu_rmse_cleaned, m.imu_rmse_raw / 3) << name;
   }
@@ -140,19 +121,15 @@ TemplateLibrary RestLibrary(SliceNormalization normalization) {
   return lib;
 }
 
+// One slice at `az`, with a spike of +50 at `spike_at`.
 ImuStream Level(double az, int spike_at = -1) {
-  ImuStream imu(40);
-  for (int t = 0; t < 40; ++t) {
-    imu[t].t_ns = t * 5000000LL;
-    imu[t].a_B.z() = az + (t == spike_at ? 50.0 : 0.0);
-  }
-  return imu;
+  std::vector<double> series(40, az);
+  if (spike_at >= 0) series[spike_at] += 50.0;
+  return testing::AzSeries(series);
 }
 
 DetectionResult Clean(const TemplateLibrary& lib, const ImuStream& imu) {
-  DetectorOptions det;
-  det.type = DetectorType::kDtw;
-  return DetectAndMitigate(det, imu, &lib);
+  return DetectAndMitigate(testing::DetectorOf(DetectorType::kDtw), imu, &lib);
 }
 
 TEST(DtwRawVsNormalized, RawReplacesAGlitchedSliceByTheBestTemplateItself) {

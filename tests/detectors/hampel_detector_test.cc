@@ -2,25 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include "detectors/detection_metrics.h"
-#include "synthetic_imu.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
 
 TEST(HampelDetector, ReplacesASpikeByTheWindowMedian) {
-  ImuStream imu(21);
-  for (int t = 0; t < 21; ++t) {
-    imu[t].t_ns = t * 5000000LL;
-    imu[t].a_B.z() = 9.81 + 0.01 * (t % 3);  // values 9.81, 9.82, 9.83
-  }
-  imu[10].a_B.z() = 60.0;
+  std::vector<double> az;
+  for (int t = 0; t < 21; ++t) az.push_back(9.81 + 0.01 * (t % 3));  // values 9.81, 9.82, 9.83
+  az[10] = 60.0;
+  const ImuStream imu = testing::AzSeries(az);
   HampelOptions options;
   options.half_window = 3;
-  DetectorOptions det;
-  det.type = DetectorType::kHampel;
-  det.hampel = options;
-  const DetectionResult r = DetectAndMitigate(det, imu);
+  const DetectionResult r = DetectAndMitigate(testing::DetectorOf(options), imu);
   ASSERT_EQ(r.cleaned.size(), imu.size());
   for (int t = 0; t < 21; ++t) EXPECT_EQ(r.flagged[t], t == 10 ? 1 : 0) << t;
   // Window 7..13 without the spike: 9.82, 9.83, 9.81, 9.82, 9.83, 9.81 (+ 60): median 9.82.
@@ -31,25 +25,13 @@ TEST(HampelDetector, HoldsAtMostHalfWindowSamples) {
   HampelOptions options;
   options.half_window = 5;
   HampelDetector detector(options);
-  const ImuStream imu = testing::SyntheticImu(3, 50);
-  std::vector<DetectedSample> out;
-  for (std::size_t t = 0; t < imu.size(); ++t) {
-    detector.Push(imu[t], &out);
-    EXPECT_LE(static_cast<int>(t + 1 - out.size()), detector.latency_samples());
-  }
-  detector.Finish(&out);
-  ASSERT_EQ(out.size(), imu.size());
-  for (std::size_t t = 0; t < imu.size(); ++t) EXPECT_EQ(out[t].sample.t_ns, imu[t].t_ns);
+  EXPECT_EQ(detector.latency_samples(), 5);
+  testing::StreamThrough(detector, testing::SyntheticImu(3, 50));
 }
 
 TEST(HampelDetector, FindsLargeGlitchesAndReducesTheError) {
-  const ImuStream imu_clean = testing::SyntheticImu(1, 4000);
-  ImuStream raw = imu_clean;
-  const auto glitches = testing::InjectGlitches(&raw, 1, 50.0, 10.0, 0.01);
-  DetectorOptions det;
-  det.type = DetectorType::kHampel;
-  const DetectionResult r = DetectAndMitigate(det, raw);
-  const DetectionMetrics m = EvaluateDetection(raw, r, glitches, imu_clean);
+  const DetectionMetrics m = testing::Evaluate(testing::DetectorOf(DetectorType::kHampel),
+                                               testing::Glitched(1, 4000, 50.0, 10.0, 0.01));
   EXPECT_GE(m.recall, 0.99);
   EXPECT_LT(m.imu_rmse_cleaned, m.imu_rmse_raw / 5);
   // Six axes tested per sample: some clean samples are flagged, a small fraction.

@@ -8,7 +8,7 @@
 #include "detectors/detector.h"
 #include "detectors/template_library.h"
 #include "sim/simulator.h"
-#include "synthetic_imu.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
@@ -31,8 +31,7 @@ class PaperScenario : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete library_; }
   static DetectionMetrics Run(DetectorType type, const Dataset& data) {
-    DetectorOptions options;
-    options.type = type;
+    const DetectorOptions options = testing::DetectorOf(type);
     return EvaluateDetection(data.imu, DetectAndMitigate(options, data.imu, library_), data.glitches,
                              data.imu_clean);
   }
@@ -102,8 +101,7 @@ TEST(RescueCourse, LegitimateBumpsRaiseFewFalseAlarmsAndGlitchesAreStillFound) {
   const Dataset clean = sim::Simulate(RescueCourse(false), 1),
                 glitched = sim::Simulate(RescueCourse(true), 1);
   for (DetectorType type : {DetectorType::kRelativeThreshold, DetectorType::kDtw, DetectorType::kHampel}) {
-    DetectorOptions options;
-    options.type = type;
+    const DetectorOptions options = testing::DetectorOf(type);
     const DetectionMetrics on_clean =
         EvaluateDetection(clean.imu, DetectAndMitigate(options, clean.imu, &library), {}, clean.imu_clean);
     EXPECT_LT(on_clean.false_positive_rate, type == DetectorType::kDtw ? 0.03 : 0.01)

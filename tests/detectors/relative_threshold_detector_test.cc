@@ -3,33 +3,21 @@
 #include <gtest/gtest.h>
 
 #include "detectors/detection_metrics.h"
-#include "synthetic_imu.h"
 #include "tests/core/test_util.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
 
-DetectorOptions MakeOptions(const RelativeThresholdOptions& options) {
-  DetectorOptions det;
-  det.type = DetectorType::kRelativeThreshold;
-  det.relative_threshold = options;
-  return det;
-}
+using testing::DetectorOf;
 
-ImuStream Constant(int samples, double az) {
-  ImuStream imu(samples);
-  for (int t = 0; t < samples; ++t) {
-    imu[t].t_ns = t * 5000000LL;
-    imu[t].a_B.z() = az;
-  }
-  return imu;
-}
+ImuStream Constant(int samples, double az) { return testing::AzSeries(std::vector<double>(samples, az)); }
 
 TEST(RelativeThresholdDetector, TruncatesASpikeToReferencePlusBound) {
   ImuStream imu = Constant(20, 9.81);
   imu[10].a_B.z() += 50.0;
   RelativeThresholdOptions options;  // az bound 2.5
-  const DetectionResult r = DetectAndMitigate(MakeOptions(options), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(options), imu);
   for (int t = 0; t < 20; ++t) EXPECT_EQ(r.flagged[t], t == 10 ? 1 : 0) << t;
   EXPECT_DOUBLE_EQ(r.cleaned[10].a_B.z(), 9.81 + options.bounds[5]);
   EXPECT_DOUBLE_EQ(r.cleaned[11].a_B.z(), 9.81);
@@ -43,7 +31,7 @@ TEST(RelativeThresholdDetector, MeanMitigationWritesTheMeanOfTheLastNormalValues
   RelativeThresholdOptions options;
   options.mitigation = ThresholdMitigation::kMean;
   options.reference_samples = 3;
-  const DetectionResult r = DetectAndMitigate(MakeOptions(options), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(options), imu);
   EXPECT_EQ(r.flagged[6], 1);
   EXPECT_NEAR(r.cleaned[6].a_B.x(), (0.3 + 0.4 + 0.5) / 3, 1e-12);
   EXPECT_EQ(r.flagged[7], 0);  // the spike did not enter the reference
@@ -54,7 +42,7 @@ TEST(RelativeThresholdDetector, AcceptsAPersistentNewLevelAfterMaxRun) {
   for (int t = 10; t < 30; ++t) imu[t].a_B.z() = 20.0;  // a real step in the motion
   RelativeThresholdOptions options;
   options.max_run = 4;
-  const DetectionResult r = DetectAndMitigate(MakeOptions(options), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(options), imu);
   for (int t = 10; t < 13; ++t) EXPECT_EQ(r.flagged[t], 1) << t;
   for (int t = 13; t < 30; ++t) EXPECT_EQ(r.flagged[t], 0) << t;
   EXPECT_DOUBLE_EQ(r.cleaned[20].a_B.z(), 20.0);
@@ -65,15 +53,11 @@ TEST(RelativeThresholdDetector, CalibratedBoundsFlagNothingOnTheirCleanDataAndCa
   RelativeThresholdOptions options;
   options.bounds = CalibrateRelativeThresholdBounds(clean, options);
   for (double b : options.bounds) EXPECT_GT(b, 0.0);
-  const DetectorOptions det = MakeOptions(options);
+  const DetectorOptions det = DetectorOf(options);
   const DetectionResult on_clean = DetectAndMitigate(det, clean);
   EXPECT_EQ(std::count(on_clean.flagged.begin(), on_clean.flagged.end(), 1), 0);
 
-  const ImuStream imu_clean = testing::SyntheticImu(1, 4000);
-  ImuStream raw = imu_clean;
-  const auto glitches = testing::InjectGlitches(&raw, 1, 50.0, 10.0, 0.01);
-  const DetectionResult r = DetectAndMitigate(det, raw);
-  const DetectionMetrics m = EvaluateDetection(raw, r, glitches, imu_clean);
+  const DetectionMetrics m = testing::Evaluate(det, testing::Glitched(1, 4000, 50.0, 10.0, 0.01));
   EXPECT_GE(m.recall, 0.99);
   EXPECT_GE(m.f1, 0.9);
   EXPECT_LT(m.imu_rmse_cleaned, m.imu_rmse_raw / 5);

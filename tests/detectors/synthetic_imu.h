@@ -34,6 +34,16 @@ inline ImuStream SyntheticImu(uint64_t seed, int samples, double noise_scale = 1
   return imu;
 }
 
+// A 200 Hz stream whose accelerometer z reads az[t] (every other axis 0).
+inline ImuStream AzSeries(const std::vector<double>& az) {
+  ImuStream imu(az.size());
+  for (std::size_t t = 0; t < az.size(); ++t) {
+    imu[t].t_ns = static_cast<int64_t>(t) * 5000000;
+    imu[t].a_B.z() = az[t];
+  }
+  return imu;
+}
+
 // Adds N(mean, std) to `axis` of each sample with probability `rate`; returns the records (glitches.csv
 // rows).
 inline std::vector<GlitchRecord> InjectGlitches(ImuStream* imu, uint64_t seed, double mean, double std,

@@ -3,18 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "detectors/detection_metrics.h"
-#include "synthetic_imu.h"
 #include "tests/core/test_util.h"
+#include "tests/detectors/detector_fixtures.h"
 
 namespace vigil::detectors {
 namespace {
 
-DetectorOptions MakeOptions(const ThresholdOptions& options) {
-  DetectorOptions det;
-  det.type = DetectorType::kThreshold;
-  det.threshold = options;
-  return det;
-}
+using testing::AzSeries;
+using testing::DetectorOf;
 
 // az bounds [-2, 24]; every other axis +-1.
 ThresholdOptions PaperBounds() {
@@ -25,18 +21,9 @@ ThresholdOptions PaperBounds() {
   return o;
 }
 
-ImuStream AzSeries(const std::vector<double>& az) {
-  ImuStream imu(az.size());
-  for (std::size_t t = 0; t < az.size(); ++t) {
-    imu[t].t_ns = static_cast<int64_t>(t) * 5000000LL;
-    imu[t].a_B.z() = az[t];
-  }
-  return imu;
-}
-
 TEST(ThresholdDetector, AValueJustInsideABoundIsNormalJustOutsideIsClampedToThatBound) {
   const ImuStream imu = AzSeries({9.81, 24.0, 24.0 + 1e-9, -2.0, -2.0 - 1e-9, 70.0, -30.0, 9.81});
-  const DetectionResult r = DetectAndMitigate(MakeOptions(PaperBounds()), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(PaperBounds()), imu);
   const std::vector<uint8_t> expected = {0, 0, 1, 0, 1, 1, 1, 0};
   EXPECT_EQ(r.flagged, expected);
   EXPECT_DOUBLE_EQ(r.cleaned[1].a_B.z(), 24.0);
@@ -51,7 +38,7 @@ TEST(ThresholdDetector, AValueJustInsideABoundIsNormalJustOutsideIsClampedToThat
 TEST(ThresholdDetector, BoundsAreOnTheValueNotOnTheChange) {
   // A large but in-range jump (a robot starting to move) passes; the relative rule would flag it.
   const ImuStream imu = AzSeries({0.0, 0.0, 20.0, 20.0});
-  const DetectionResult r = DetectAndMitigate(MakeOptions(PaperBounds()), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(PaperBounds()), imu);
   EXPECT_EQ(std::count(r.flagged.begin(), r.flagged.end(), 1), 0);
 }
 
@@ -60,7 +47,7 @@ TEST(ThresholdDetector, MeanMitigationWritesTheMeanOfTheLastOutputValues) {
   o.mitigation = ThresholdMitigation::kMean;
   o.mean_samples = 3;
   const ImuStream imu = AzSeries({1.0, 2.0, 3.0, 4.0, 60.0, 60.0, 5.0});
-  const DetectionResult r = DetectAndMitigate(MakeOptions(o), imu);
+  const DetectionResult r = DetectAndMitigate(DetectorOf(o), imu);
   EXPECT_EQ(r.flagged[4], 1);
   EXPECT_DOUBLE_EQ(r.cleaned[4].a_B.z(), (2.0 + 3.0 + 4.0) / 3);
   // The next glitch averages the last three outputs, the replaced value included.
@@ -71,7 +58,7 @@ TEST(ThresholdDetector, MeanMitigationWritesTheMeanOfTheLastOutputValues) {
 TEST(ThresholdDetector, MeanMitigationWithoutHistoryClamps) {
   ThresholdOptions o = PaperBounds();
   o.mitigation = ThresholdMitigation::kMean;
-  const DetectionResult r = DetectAndMitigate(MakeOptions(o), AzSeries({60.0, 1.0}));
+  const DetectionResult r = DetectAndMitigate(DetectorOf(o), AzSeries({60.0, 1.0}));
   EXPECT_DOUBLE_EQ(r.cleaned[0].a_B.z(), 24.0);
 }
 
@@ -92,14 +79,10 @@ TEST(ThresholdDetector, CalibrationWidensTheCleanRangeAboutItsCentre) {
 TEST(ThresholdDetector, CalibratedBoundsFlagNothingOnTheirCleanDataAndCatchLargeGlitches) {
   const ImuStream clean = testing::SyntheticImu(1000, 4000);
   const ThresholdOptions o = WithBounds(ThresholdOptions{}, CalibrateThresholdBounds(clean, {}));
-  const DetectionResult on_clean = DetectAndMitigate(MakeOptions(o), clean);
+  const DetectionResult on_clean = DetectAndMitigate(DetectorOf(o), clean);
   EXPECT_EQ(std::count(on_clean.flagged.begin(), on_clean.flagged.end(), 1), 0);
 
-  const ImuStream imu_clean = testing::SyntheticImu(1, 4000);
-  ImuStream raw = imu_clean;
-  const auto glitches = testing::InjectGlitches(&raw, 1, 50.0, 10.0, 0.01);
-  const DetectionResult r = DetectAndMitigate(MakeOptions(o), raw);
-  const DetectionMetrics m = EvaluateDetection(raw, r, glitches, imu_clean);
+  const DetectionMetrics m = testing::Evaluate(DetectorOf(o), testing::Glitched(1, 4000, 50.0, 10.0, 0.01));
   EXPECT_GE(m.recall, 0.9);
   EXPECT_LT(m.imu_rmse_cleaned, m.imu_rmse_raw / 2);
 }

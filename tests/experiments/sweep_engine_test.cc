@@ -274,17 +274,19 @@ TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
   TempDir dir;
   const std::string sweep = WriteSmallSweep(dir, kMethods, "{count: 5, first: 1}");  // 30 runs
   const fs::path out = dir.path() / "out";
-  const pid_t child = StartHelper({sweep, out.string(), "40"});
+  constexpr std::size_t kKilledInRun = 8;  // the helper kills itself inside its 9th run
+  const pid_t child = StartHelper({sweep, out.string(), "--die-at-run", std::to_string(kKilledInRun)});
   ASSERT_GT(child, 0);
-  for (int i = 0; i < 1000 && CommittedRuns(out / "runs") < 8; ++i) SleepMs(5);
-  ::kill(child, SIGKILL);
   int status = 0;
-  ::waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "exit status " << status;
   const std::size_t committed = CommittedRuns(out / "runs");
-  ASSERT_GE(committed, 8u);
-  ASSERT_LT(committed, 30u) << "the helper finished before it was killed";
+  ASSERT_EQ(committed, kKilledInRun);
   EXPECT_FALSE(fs::exists(out / "results.csv"));
+  std::size_t staged = 0;  // run 8, half-written
+  for (const auto& e : fs::directory_iterator(out / "runs"))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) ++staged;
+  EXPECT_EQ(staged, 1u);
 
   const SweepSpec spec = LoadSweepSpec(sweep);
   SweepRunOptions resume;

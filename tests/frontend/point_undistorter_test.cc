@@ -1,29 +1,21 @@
 #include "frontend/point_undistorter.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/calib3d.hpp>
 
+#include "tests/core/euroc_cam0.h"
+
 namespace vigil::frontend {
 namespace {
 
-// EuRoC's cam0 (MH_01 ... V2_03): strong barrel distortion.
-TrackerCamera EurocCam0() {
-  TrackerCamera camera;
-  camera.width = 752;
-  camera.height = 480;
-  camera.fx = 458.654;
-  camera.fy = 457.296;
-  camera.cx = 367.215;
-  camera.cy = 248.375;
-  camera.distortion = {-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05};
-  return camera;
-}
+using vigil::testing::EurocCam0;
 
-TEST(PointUndistorter, DistortMatchesOpenCvProjection) {
-  const TrackerCamera camera = EurocCam0();
-  const PointUndistorter undistorter(camera);
+// The front-end inverts the camera model with OpenCV: core's DistortPixel must be OpenCV's projection.
+TEST(PointUndistorter, CameraModelIsOpenCvsProjection) {
+  const CameraModel camera = EurocCam0();
   const cv::Matx33d K(camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1);
   const std::vector<double> D(camera.distortion.begin(), camera.distortion.end());
   for (double x = -0.7; x <= 0.7; x += 0.1) {
@@ -31,25 +23,25 @@ TEST(PointUndistorter, DistortMatchesOpenCvProjection) {
       std::vector<cv::Point3d> ray = {{x, y, 1.0}};
       std::vector<cv::Point2d> projected;
       cv::projectPoints(ray, cv::Vec3d::zeros(), cv::Vec3d::zeros(), K, D, projected);
-      const cv::Point2d d = undistorter.Distort({camera.fx * x + camera.cx, camera.fy * y + camera.cy});
-      EXPECT_NEAR(d.x, projected[0].x, 1e-9);
-      EXPECT_NEAR(d.y, projected[0].y, 1e-9);
+      const Eigen::Vector2d d = camera.DistortPixel({camera.fx * x + camera.cx, camera.fy * y + camera.cy});
+      EXPECT_NEAR(d.x(), projected[0].x, 1e-9);
+      EXPECT_NEAR(d.y(), projected[0].y, 1e-9);
     }
   }
 }
 
 TEST(PointUndistorter, UndistortInvertsTheModelOverTheWholeImage) {
-  const TrackerCamera camera = EurocCam0();
+  const CameraModel camera = EurocCam0();
   const PointUndistorter undistorter(camera);
   // Undistorted pixels whose raw pixel lies in the image, corners included.
   std::vector<cv::Point2d> truth;
   std::vector<cv::Point2f> raw;
   for (double u = -60; u <= camera.width + 60; u += 16) {
     for (double v = -40; v <= camera.height + 40; v += 16) {
-      const cv::Point2d d = undistorter.Distort({u, v});
-      if (d.x < 0 || d.y < 0 || d.x >= camera.width || d.y >= camera.height) continue;
+      const Eigen::Vector2d d = camera.DistortPixel({u, v});
+      if (!camera.InImage(d)) continue;
       truth.push_back({u, v});
-      raw.push_back(cv::Point2f(static_cast<float>(d.x), static_cast<float>(d.y)));
+      raw.push_back(cv::Point2f(static_cast<float>(d.x()), static_cast<float>(d.y())));
     }
   }
   ASSERT_GT(raw.size(), 1000u);
@@ -72,8 +64,26 @@ TEST(PointUndistorter, UndistortInvertsTheModelOverTheWholeImage) {
   EXPECT_GT(coarse_worst, 10 * worst);
 }
 
+// OpenCV's inversion (float pixels) and the camera model's own (double) agree to a float's resolution.
+TEST(PointUndistorter, AgreesWithTheCameraModelsUndistortion) {
+  const CameraModel camera = EurocCam0();
+  const PointUndistorter undistorter(camera);
+  std::vector<cv::Point2f> raw;
+  for (float v = 0.0f; v < static_cast<float>(camera.height); v += 7.3f)
+    for (float u = 0.0f; u < static_cast<float>(camera.width); u += 5.9f) raw.push_back({u, v});
+  const std::vector<cv::Point2f> out = undistorter.Undistort(raw);
+  ASSERT_EQ(out.size(), raw.size());
+  double worst_px = 0.0;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const Eigen::Vector2d model = camera.UndistortPixel({raw[i].x, raw[i].y});
+    worst_px = std::max(worst_px, (model - Eigen::Vector2d(out[i].x, out[i].y)).norm());
+  }
+  // one float ulp at up to 1,024 px is 6.1e-5 px
+  EXPECT_LE(worst_px, 6.2e-5);
+}
+
 TEST(PointUndistorter, IdentityWithoutDistortion) {
-  TrackerCamera camera;
+  const CameraModel camera;
   const PointUndistorter undistorter(camera);
   const std::vector<cv::Point2f> raw = {{1.25f, 2.5f}, {600.0f, 470.75f}};
   EXPECT_EQ(undistorter.Undistort(raw), raw);
