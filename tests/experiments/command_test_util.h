@@ -10,7 +10,7 @@
 #include "core/output.h"
 #include "sim/simulator.h"
 
-namespace vigil::experiments::testing {
+namespace vigil::testing {
 
 // A `duration_s` ellipse recording of `seed` (glitches on when `glitches`) written into `dir` (created).
 inline Dataset WriteSimulatedRecording(const std::filesystem::path& dir, double duration_s, uint64_t seed,
@@ -33,4 +33,4 @@ inline bool OnlyEntries(const std::filesystem::path& dir, const std::set<std::st
   return true;
 }
 
-}  // namespace vigil::experiments::testing
+}  // namespace vigil::testing

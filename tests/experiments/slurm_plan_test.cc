@@ -113,11 +113,12 @@ TEST(SubmitSlurmJob, SubmitsTheArrayThenTheFinalizeJobDependingOnIt) {
   TempDir tmp;
   const fs::path bin = tmp.path() / "bin";
   fs::create_directories(bin);
-  // A stand-in sbatch: logs its arguments and prints a job id as `sbatch --parsable` does.
+  // A stand-in sbatch (shell builtins only: PATH holds nothing else): logs its arguments and prints a job id
+  // as `sbatch --parsable` does, 101 for the first call, 102 for the second.
   const fs::path log = tmp.path() / "sbatch.log";
-  const std::string sbatch =
-      tmp.File("bin/sbatch", "#!/bin/sh\necho \"$@\" >> " + log.string() + "\nn=$(wc -l < " + log.string() +
-                                 ")\necho \"$((100 + n));cluster\"\n");
+  const std::string sbatch = tmp.File("bin/sbatch", "#!/bin/sh\necho \"$@\" >> " + log.string() +
+                                                        "\nn=0\nwhile read -r _; do n=$((n + 1)); done < " +
+                                                        log.string() + "\necho \"$((100 + n));cluster\"\n");
   ::chmod(sbatch.c_str(), 0755);
   ScopedPath path(bin);
   SlurmRequest request = SlurmRequestIn(tmp);

@@ -12,7 +12,7 @@
 namespace vigil::experiments {
 namespace {
 namespace fs = std::filesystem;
-using testing::WriteSimulatedRecording;
+using vigil::testing::WriteSimulatedRecording;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
 

@@ -13,8 +13,8 @@
 namespace vigil::experiments {
 namespace {
 namespace fs = std::filesystem;
-using testing::OnlyEntries;
-using testing::WriteSimulatedRecording;
+using vigil::testing::OnlyEntries;
+using vigil::testing::WriteSimulatedRecording;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
 
