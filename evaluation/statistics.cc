@@ -1,11 +1,11 @@
-#include "experiments/statistics.h"
+#include "evaluation/statistics.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 ErrorStatistics ComputeStatistics(std::vector<double> values) {
   ErrorStatistics s;
@@ -37,4 +37,4 @@ nlohmann::json StatisticsJson(const ErrorStatistics& stats) {
           {"n", stats.n}};
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

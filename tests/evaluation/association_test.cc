@@ -1,10 +1,10 @@
-#include "experiments/association.h"
+#include "evaluation/association.h"
 
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 constexpr int64_t kMs = 1'000'000;
@@ -52,4 +52,4 @@ TEST(Association, RejectsUnorderedInput) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -5,7 +5,7 @@
 
 #include "core/config.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 enum class Alignment { kPosYaw, kSe3, kSim3, kNone };
 
@@ -52,4 +52,4 @@ struct EvaluationOptions {
   }
 };
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

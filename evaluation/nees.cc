@@ -1,4 +1,4 @@
-#include "experiments/nees.h"
+#include "evaluation/nees.h"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 // e^T P^-1 e, or false when P is not positive definite or not finite.
@@ -50,4 +50,4 @@ NeesStatistics ComputeNees(const Trajectory& gt, const Trajectory& est,
   return out;
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

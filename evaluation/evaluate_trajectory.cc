@@ -1,13 +1,13 @@
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include "core/config.h"
 #include "core/so3.h"
-#include "experiments/relative_error.h"
+#include "evaluation/relative_error.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 Eigen::Isometry3d Pose(const Eigen::Quaterniond& q, const Eigen::Vector3d& p) {
@@ -124,4 +124,4 @@ std::string EvaluationTable(const TrajectoryEvaluation& ev) {
   return out;
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

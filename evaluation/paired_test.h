@@ -15,7 +15,7 @@
 #include <map>
 #include <string>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 using SeedValues = std::map<uint64_t, double>;  // seed -> value (one run's error)
 
@@ -49,4 +49,4 @@ Verdict LowerVerdict(const PairedTest& test, const PairedTestOptions& options = 
 
 const char* VerdictName(Verdict v);  // "holds", "does not hold", "inconclusive"
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

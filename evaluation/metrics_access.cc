@@ -1,10 +1,10 @@
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 
 #include <cmath>
 #include <limits>
 #include <string>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 nlohmann::json NumberOrNull(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -34,4 +34,4 @@ std::string MetricText(const nlohmann::json& metrics, std::string_view key) {
   return it != metrics.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -1,10 +1,10 @@
-#include "experiments/statistics.h"
+#include "evaluation/statistics.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 TEST(Statistics, HandComputed) {
@@ -32,4 +32,4 @@ TEST(Statistics, EmptyIsNullInJson) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

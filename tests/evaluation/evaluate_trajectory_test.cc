@@ -1,4 +1,4 @@
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 
 #include <cmath>
 
@@ -8,7 +8,7 @@
 #include "core/output.h"
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 // The reference ellipse motion at 30 Hz for `seconds`.
@@ -111,13 +111,13 @@ TEST(EvaluateTrajectory, JsonHasTheKeysOfFormatsMd) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 TEST(EvaluateTrajectory, MatchesRpgTrajectoryEvaluationOnTheSameFiles) {
-  const std::string data = std::string(VIGIL_SOURCE_DIR) + "/tests/experiments/data/";
+  const std::string data = std::string(VIGIL_SOURCE_DIR) + "/tests/evaluation/data/";
   const Trajectory gt = ReadTumTrajectory(data + "rpg_pair_gt.txt");
   const Trajectory est = ReadTumTrajectory(data + "rpg_pair_est.txt");
   const nlohmann::json reference = nlohmann::json::parse(ReadFile(data + "rpg_pair_reference.json"));
@@ -152,4 +152,4 @@ TEST(EvaluateTrajectory, MatchesRpgTrajectoryEvaluationOnTheSameFiles) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

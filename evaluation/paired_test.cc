@@ -1,4 +1,4 @@
-#include "experiments/paired_test.h"
+#include "evaluation/paired_test.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/random.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 // Nearest-rank-free percentile: linear interpolation between order statistics of sorted `v`.
@@ -90,4 +90,4 @@ const char* VerdictName(Verdict v) {
   return "inconclusive";
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -1,4 +1,4 @@
-#include "experiments/relative_error.h"
+#include "evaluation/relative_error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 Eigen::Isometry3d Pose(const Eigen::Matrix3d& R, const Eigen::Vector3d& p) {
@@ -102,4 +102,4 @@ TEST(RelativeError, TooShortTrajectoryHasNoSample) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

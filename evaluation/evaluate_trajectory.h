@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/types.h"
-#include "experiments/alignment.h"
-#include "experiments/association.h"
-#include "experiments/evaluation_options.h"
-#include "experiments/nees.h"
-#include "experiments/statistics.h"
+#include "evaluation/alignment.h"
+#include "evaluation/association.h"
+#include "evaluation/evaluation_options.h"
+#include "evaluation/nees.h"
+#include "evaluation/statistics.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 struct RelativeErrorStatistics {
   double distance_m = 0.0;
@@ -60,4 +60,4 @@ nlohmann::json EvaluationJson(const TrajectoryEvaluation& evaluation);
 // A readable multi-line table of the same numbers (for `vigil eval`).
 std::string EvaluationTable(const TrajectoryEvaluation& evaluation);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

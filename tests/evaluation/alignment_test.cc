@@ -1,4 +1,4 @@
-#include "experiments/alignment.h"
+#include "evaluation/alignment.h"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "core/random.h"
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 std::vector<Eigen::Vector3d> RandomPoints(int n, uint64_t seed) {
@@ -106,4 +106,4 @@ TEST(Alignment, SinglePairAndBadInput) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

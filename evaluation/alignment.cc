@@ -1,4 +1,4 @@
-#include "experiments/alignment.h"
+#include "evaluation/alignment.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 Eigen::Vector3d Mean(const std::vector<Eigen::Vector3d>& p) {
@@ -58,4 +58,4 @@ SimilarityTransform AlignPositions(const std::vector<Eigen::Vector3d>& p_est,
   return T;
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 // rpg's default tolerance: 0.02 s.
 inline constexpr int64_t kDefaultMaxAssociationDifferenceNs = 20'000'000;
@@ -25,4 +25,4 @@ std::vector<MatchedIndices> AssociateTimestamps(
     const std::vector<int64_t>& est_ns, const std::vector<int64_t>& gt_ns,
     int64_t max_difference_ns = kDefaultMaxAssociationDifferenceNs);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -16,9 +16,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "experiments/evaluation_options.h"
+#include "evaluation/evaluation_options.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 // x -> scale R x + t, mapping estimate coordinates into the ground-truth world frame.
 struct SimilarityTransform {
@@ -35,4 +35,4 @@ struct SimilarityTransform {
 SimilarityTransform AlignPositions(const std::vector<Eigen::Vector3d>& p_est,
                                    const std::vector<Eigen::Vector3d>& p_gt, Alignment align);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

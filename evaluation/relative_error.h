@@ -18,9 +18,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "experiments/statistics.h"
+#include "evaluation/statistics.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 // Distance travelled from the first position to each position.
 std::vector<double> DistanceFromStart(const std::vector<Eigen::Vector3d>& p);
@@ -43,4 +43,4 @@ RelativeErrors ComputeRelativeErrors(const std::vector<Eigen::Isometry3d>& T_W_e
                                      const std::vector<Eigen::Isometry3d>& T_W_gt, double distance_m,
                                      double scale = 1.0, double max_difference_m = -1.0);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

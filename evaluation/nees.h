@@ -18,11 +18,11 @@
 #include <Eigen/Core>
 
 #include "core/types.h"
-#include "experiments/alignment.h"
-#include "experiments/association.h"
-#include "experiments/statistics.h"
+#include "evaluation/alignment.h"
+#include "evaluation/association.h"
+#include "evaluation/statistics.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 struct NeesStatistics {
   ErrorStatistics position, orientation;  // n = 0 without covariances
@@ -36,4 +36,4 @@ NeesStatistics ComputeNees(const Trajectory& gt, const Trajectory& est,
                            const SimilarityTransform& est_to_gt,
                            int64_t max_difference_ns = kDefaultMaxAssociationDifferenceNs);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -1,6 +1,6 @@
 // NEES against a known covariance: errors drawn from N(0, P) and normalized by the same P have a mean NEES of
 // 3 per 3-DoF block (chi-square with 3 degrees of freedom); normalized by 2 P, 1.5.
-#include "experiments/nees.h"
+#include "evaluation/nees.h"
 
 #include <cmath>
 #include <random>
@@ -11,7 +11,7 @@
 
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
@@ -106,4 +106,4 @@ TEST(Nees, PosesWithoutAUsableCovarianceAreSkipped) {
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

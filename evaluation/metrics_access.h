@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 // metrics["a"]["b"]... as a double; NaN when absent or not a number.
 double MetricNumber(const nlohmann::json& metrics, std::initializer_list<std::string_view> path);
@@ -22,4 +22,4 @@ nlohmann::json NumberOrNull(double v);
 // metrics["status"] or "" (and "failure_reason").
 std::string MetricText(const nlohmann::json& metrics, std::string_view key);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -1,4 +1,4 @@
-#include "experiments/association.h"
+#include "evaluation/association.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 #include <string>
 #include <tuple>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 namespace {
 
 void CheckIncreasing(const std::vector<int64_t>& t_ns, const char* what) {
@@ -54,4 +54,4 @@ std::vector<MatchedIndices> AssociateTimestamps(const std::vector<int64_t>& est_
   return matches;
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

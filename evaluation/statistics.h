@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 struct ErrorStatistics {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -24,4 +24,4 @@ ErrorStatistics ComputeStatistics(std::vector<double> values);
 // {"rmse": .., "mean": .., "median": .., "std": .., "min": .., "max": .., "n": ..} (NaN as null).
 nlohmann::json StatisticsJson(const ErrorStatistics& stats);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation

@@ -1,4 +1,4 @@
-#include "experiments/relative_error.h"
+#include "evaluation/relative_error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/so3.h"
 
-namespace vigil::experiments {
+namespace vigil::evaluation {
 
 std::vector<double> DistanceFromStart(const std::vector<Eigen::Vector3d>& p) {
   std::vector<double> d(p.size(), 0.0);
@@ -69,4 +69,4 @@ RelativeErrors ComputeRelativeErrors(const std::vector<Eigen::Isometry3d>& T_W_e
   return out;
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::evaluation
