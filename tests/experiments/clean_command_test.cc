@@ -13,10 +13,10 @@
 namespace vigil::experiments {
 namespace {
 namespace fs = std::filesystem;
-using vigil::testing::OnlyEntries;
-using vigil::testing::WriteSimulatedRecording;
 using vigil::testing::InputErrorOf;
+using vigil::testing::OnlyEntries;
 using vigil::testing::TempDir;
+using vigil::testing::WriteSimulatedRecording;
 
 CleanRequest CleanRequestIn(const TempDir& tmp, const std::string& detector) {
   CleanRequest request;

@@ -12,9 +12,9 @@
 namespace vigil::experiments {
 namespace {
 namespace fs = std::filesystem;
-using vigil::testing::WriteSimulatedRecording;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
+using vigil::testing::WriteSimulatedRecording;
 
 TEST(BuildTemplateLibraryFile, BuildsFromTheCleanImuAndReportsTheCalibratedBounds) {
   TempDir tmp;
