@@ -7,7 +7,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/format.h"
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 
 namespace vigil::app {
 
@@ -25,15 +25,15 @@ void AddEvalCommand(CLI::App& root) {
   cmd->add_option("GT", args->gt, "ground-truth trajectory (e.g. stamped_groundtruth.txt)")->required();
   cmd->add_option("EST", args->est, "estimated trajectory (e.g. stamped_traj_estimate.txt)")->required();
   cmd->add_option("--align", args->align,
-                  "alignment: " + config::EnumChoices(experiments::AlignmentNames()) + " (default posyaw)");
+                  "alignment: " + config::EnumChoices(evaluation::AlignmentNames()) + " (default posyaw)");
   cmd->add_option(
          "--distances", args->distances,
          "sub-trajectory lengths of the relative errors [m], comma separated (default 7,14,21,28,35)")
       ->delimiter(',');
   cmd->add_flag("--json", args->json, "print JSON (the ate/relative/coverage part of metrics.json)");
   SetAction(cmd, [args] {
-    experiments::EvaluationOptions options;
-    const auto align = config::EnumFromName(args->align, experiments::AlignmentNames());
+    evaluation::EvaluationOptions options;
+    const auto align = config::EnumFromName(args->align, evaluation::AlignmentNames());
     if (!align) throw InputError("--align: unknown alignment '" + args->align + "'");
     options.align = *align;
     if (!args->distances.empty()) {
@@ -43,13 +43,13 @@ void AddEvalCommand(CLI::App& root) {
     }
     const Trajectory gt = ReadTumTrajectory(args->gt);
     const Trajectory est = ReadTumTrajectory(args->est);
-    const experiments::TrajectoryEvaluation ev = experiments::EvaluateTrajectory(gt, est, options);
+    const evaluation::TrajectoryEvaluation ev = evaluation::EvaluateTrajectory(gt, est, options);
     if (ev.matched_poses == 0)
       throw InputError(args->est + ": no pose within 0.02 s of a pose of " + args->gt);
     if (args->json)
-      std::printf("%s\n", experiments::EvaluationJson(ev).dump(2).c_str());
+      std::printf("%s\n", evaluation::EvaluationJson(ev).dump(2).c_str());
     else
-      std::printf("%s", experiments::EvaluationTable(ev).c_str());
+      std::printf("%s", evaluation::EvaluationTable(ev).c_str());
     return 0;
   });
 }

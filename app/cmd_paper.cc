@@ -13,6 +13,28 @@
 #include "plots/render.h"
 
 namespace vigil::app {
+namespace {
+
+struct PaperArgs {
+  std::string sweep;        // empty: the shipped configs/paper_sweep.yaml (app/config_dir.h)
+  std::string noise_sweep;  // empty: the shipped configs/paper_noise_sweep.yaml
+  bool no_noise_ablation = false;
+  long long seeds = 10;
+  SweepArgs run;
+};
+
+// The estimator-noise ablation into DIR/noise_ablation/, then reproduction.md again, now with the ablation
+// beside the main sweep. Returns the ablation's exit status.
+int RunNoiseAblation(const SweepArgs& run, const experiments::SweepSpec& noise) {
+  SweepArgs ablation = run;
+  ablation.output = (std::filesystem::path(run.output) / "noise_ablation").string();
+  const int status = ablation.Run(noise, "paper (noise ablation)");
+  const std::filesystem::path dir = run.output;
+  experiments::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
+  return status;
+}
+
+}  // namespace
 
 void AddPaperCommand(CLI::App& root) {
   auto* cmd = root.add_subcommand(
@@ -21,14 +43,7 @@ void AddPaperCommand(CLI::App& root) {
       "vigil's variants x seeds, then tables 2-4, summary.md (with the published numbers beside ours), the "
       "estimator-noise ablation (DIR/noise_ablation/), reproduction.md (the paper's claims judged) and "
       "figures/*.png");
-  struct Args {
-    std::string sweep;        // empty: the shipped configs/paper_sweep.yaml (app/config_dir.h)
-    std::string noise_sweep;  // empty: the shipped configs/paper_noise_sweep.yaml
-    bool no_noise_ablation = false;
-    long long seeds = 10;
-    SweepArgs run;
-  };
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<PaperArgs>();
   args->run.AddTo(cmd);
   cmd->add_option("--seeds", args->seeds, "seeds per cell (1, 2, ... N)")
       ->capture_default_str()
@@ -58,14 +73,7 @@ void AddPaperCommand(CLI::App& root) {
     int status = args->run.Run(spec, "paper");
     // A shard's figures would show part of the sweep: `vigil tables DIR --figures` draws them at the end.
     if (!whole) return status;
-    if (ablate) {
-      SweepArgs ablation = args->run;
-      ablation.output = (std::filesystem::path(args->run.output) / "noise_ablation").string();
-      status = std::max(status, ablation.Run(noise, "paper (noise ablation)"));
-      // reproduction.md again, now with the ablation beside the main sweep.
-      const std::filesystem::path dir = args->run.output;
-      experiments::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
-    }
+    if (ablate) status = std::max(status, RunNoiseAblation(args->run, noise));
     const auto figures = plots::RenderSweepFigures(args->run.output, plots::FigureOptions{});
     std::fprintf(stderr, "vigil paper: %zu figures -> %s\n", figures.size(),
                  (std::filesystem::path(args->run.output) / "figures").string().c_str());

@@ -36,6 +36,27 @@ void RefuseBaselineOutput(const Args& args) {
         ": --write-baseline: not a vigil baseline (no \"format\": \"vigil-regress-baseline-1\"); "
         "--force replaces only a baseline");
 }
+
+// Compares `current` with the baseline file, prints the report (stdout) and its summary (stderr); returns the
+// exit status (1 on a regression, or when no cell was compared). `tolerance`: the baseline's.
+int CompareWithBaselineFile(const std::string& baseline_file,
+                            const std::vector<experiments::RegressionCell>& current,
+                            experiments::RegressionTolerance* tolerance) {
+  std::vector<experiments::RegressionCell> baseline;
+  experiments::ReadBaseline(baseline_file, &baseline, tolerance);
+  const experiments::RegressionReport report =
+      experiments::CompareWithBaseline(current, baseline, *tolerance);
+  std::fputs(report.text.c_str(), stdout);
+  std::fprintf(stderr, "vigil regress: %zu cells compared with %s: %zu regressed, %zu improved%s\n",
+               report.compared, baseline_file.c_str(), report.regressions, report.improvements,
+               report.improvements && !report.regressions ? " (consider recording a new baseline)" : "");
+  if (report.compared == 0) {  // unreachable with a valid baseline (it has cells), kept as the last word
+    std::fprintf(stderr, "vigil: error: %s: no cell compared: the gate checked nothing\n",
+                 baseline_file.c_str());
+    return 1;
+  }
+  return report.regressions ? 1 : 0;
+}
 }  // namespace
 
 void AddRegressCommand(CLI::App& root) {
@@ -60,22 +81,8 @@ void AddRegressCommand(CLI::App& root) {
     const ex::SweepAggregate agg = ex::AggregateSweep(args->dir, spec, ex::SweepDistances(spec));
     const std::vector<ex::RegressionCell> current = ex::RegressionCells(agg);
     ex::RegressionTolerance tolerance;
-    int status = 0;
-    if (!args->baseline.empty()) {
-      std::vector<ex::RegressionCell> baseline;
-      ex::ReadBaseline(args->baseline, &baseline, &tolerance);
-      const ex::RegressionReport report = ex::CompareWithBaseline(current, baseline, tolerance);
-      std::fputs(report.text.c_str(), stdout);
-      std::fprintf(stderr, "vigil regress: %zu cells compared with %s: %zu regressed, %zu improved%s\n",
-                   report.compared, args->baseline.c_str(), report.regressions, report.improvements,
-                   report.improvements && !report.regressions ? " (consider recording a new baseline)" : "");
-      if (report.regressions) status = 1;
-      if (report.compared == 0) {  // unreachable with a valid baseline (it has cells), kept as the last word
-        std::fprintf(stderr, "vigil: error: %s: no cell compared: the gate checked nothing\n",
-                     args->baseline.c_str());
-        status = 1;
-      }
-    }
+    const int status =
+        args->baseline.empty() ? 0 : CompareWithBaselineFile(args->baseline, current, &tolerance);
     if (!args->write_baseline.empty()) {
       // Checked again here for a --baseline-less call; the same check ran before any work above.
       RefuseBaselineOutput(*args);

@@ -22,6 +22,29 @@ std::string IdList(const std::vector<std::string>& ids, std::size_t shown = 10) 
   return s;
 }
 
+// What is replaced must be a file: a directory (or FIFO...) of that name is refused before any work.
+void RefuseNonFileOutputs(const std::string& dir) {
+  for (const char* name : {"results.csv", "timing.csv", "summary.md"}) {
+    const std::filesystem::path path = std::filesystem::path(dir) / name;
+    std::error_code ec;
+    if (std::filesystem::exists(std::filesystem::symlink_status(path, ec)) &&
+        !std::filesystem::is_regular_file(std::filesystem::status(path, ec)))
+      throw InputError(path.string() + ": exists and is not a regular file; move it away");
+  }
+}
+
+// The failed and the missing runs, when there are any.
+void ReportUnfinishedRuns(const experiments::SweepAggregate& agg) {
+  if (!agg.failed_ids.empty())
+    std::fprintf(stderr, "vigil tables: failed runs (reasons in summary.md): %s\n",
+                 IdList(agg.failed_ids).c_str());
+  if (!agg.missing_ids.empty())
+    std::fprintf(
+        stderr,
+        "vigil tables: missing runs (not finished: resume the sweep or its shard with --resume): %s\n",
+        IdList(agg.missing_ids).c_str());
+}
+
 }  // namespace
 
 void AddTablesCommand(CLI::App& root) {
@@ -40,27 +63,13 @@ void AddTablesCommand(CLI::App& root) {
                 "exit 0 even when runs are missing (tables of the runs finished so far)");
   cmd->add_flag("--figures", args->figures, "also render figures/*.png, as vigil paper does");
   SetAction(cmd, [args] {
-    // What is replaced must be a file: a directory (or FIFO...) of that name is refused before any work.
-    for (const char* name : {"results.csv", "timing.csv", "summary.md"}) {
-      const std::filesystem::path path = std::filesystem::path(args->dir) / name;
-      std::error_code ec;
-      if (std::filesystem::exists(std::filesystem::symlink_status(path, ec)) &&
-          !std::filesystem::is_regular_file(std::filesystem::status(path, ec)))
-        throw InputError(path.string() + ": exists and is not a regular file; move it away");
-    }
+    RefuseNonFileOutputs(args->dir);
     const experiments::SweepAggregate agg = experiments::WriteSweepTables(args->dir);
     std::fprintf(stderr,
                  "vigil tables: %zu runs (%zu failed, %zu missing) -> %s/{results.csv, timing.csv, table2-4, "
                  "summary.md}\n",
                  agg.runs, agg.failed_ids.size(), agg.missing, args->dir.c_str());
-    if (!agg.failed_ids.empty())
-      std::fprintf(stderr, "vigil tables: failed runs (reasons in summary.md): %s\n",
-                   IdList(agg.failed_ids).c_str());
-    if (!agg.missing_ids.empty())
-      std::fprintf(
-          stderr,
-          "vigil tables: missing runs (not finished: resume the sweep or its shard with --resume): %s\n",
-          IdList(agg.missing_ids).c_str());
+    ReportUnfinishedRuns(agg);
     if (args->figures) {
       const auto figures = plots::RenderSweepFigures(args->dir, plots::FigureOptions{});
       std::fprintf(stderr, "vigil tables: %zu figures -> %s\n", figures.size(),

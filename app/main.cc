@@ -9,6 +9,7 @@
 #include <glog/logging.h>
 
 #include "app/commands.h"
+#include "app/set_args.h"
 #include "core/error.h"
 
 namespace vigil::app {
@@ -42,7 +43,7 @@ void SetAction(CLI::App* cmd, Action action) { Actions()[cmd] = std::move(action
 void ConfigArgs::AddTo(CLI::App* cmd, bool optional) {
   auto* opt = cmd->add_option("CONFIG", config_path, "run configuration (YAML; see configs/README.md)");
   if (!optional) opt->required();
-  cmd->add_option("--set", overrides, "override a config key: key.path=value (repeatable)")->take_all();
+  AddSetOption(cmd, overrides, "override a config key: key.path=value (repeatable)");
   cmd->add_option("--seed", seed, "run seed 0 .. 2^63 - 1 (overrides the config's `seed`)");
 }
 

@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
 #include <cstdint>
+#include <cstdio>
 #include <string_view>
 #include <system_error>
 
@@ -20,6 +22,19 @@ std::string FormatDouble(double value) {
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof(buf), value);
   return std::string(buf, res.ptr);
+}
+
+std::string FormatPrintf(const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  std::va_list again;
+  va_copy(again, args);
+  const int size = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
+  if (size > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
 }
 
 std::string FormatFixed(double value, int decimals) {

@@ -6,7 +6,7 @@
 
 namespace vigil::experiments {
 
-const SeedValues* SeedResults::Ate(const std::string& group, const std::string& method) const {
+const evaluation::SeedValues* SeedResults::Ate(const std::string& group, const std::string& method) const {
   const auto g = ate_m.find(group);
   if (g == ate_m.end()) return nullptr;
   const auto m = g->second.find(method);
@@ -22,7 +22,7 @@ std::size_t SeedResults::Failed(const std::string& group, const std::string& met
 
 std::vector<ClaimSpec> PaperClaims() {
   using M = ClaimMetric;
-  const double kNaN = PairedTest::kNaN;
+  const double kNaN = evaluation::PairedTest::kNaN;
   return {
       {"a1", "original works at N(0,1): mean ATE below 0.1 m", "0.06 m", M::kAte, "original", "noise_0_1", "",
        "", 0.1},
@@ -49,7 +49,7 @@ std::vector<ClaimSpec> PaperClaims() {
 
 namespace {
 
-const SeedValues* Side(const ClaimSpec& c, const SeedResults& r, bool a) {
+const evaluation::SeedValues* Side(const ClaimSpec& c, const SeedResults& r, bool a) {
   const std::string& method = a ? c.method_a : c.method_b;
   switch (c.metric) {
     case ClaimMetric::kAte:
@@ -69,18 +69,18 @@ const SeedValues* Side(const ClaimSpec& c, const SeedResults& r, bool a) {
 }  // namespace
 
 ClaimResult EvaluateClaim(const ClaimSpec& claim, const SeedResults& results,
-                          const PairedTestOptions& options) {
+                          const evaluation::PairedTestOptions& options) {
   ClaimResult r;
   r.spec = claim;
   const bool constant = std::isfinite(claim.constant_b);
-  const SeedValues* a = Side(claim, results, true);
-  const SeedValues* b = constant ? nullptr : Side(claim, results, false);
+  const evaluation::SeedValues* a = Side(claim, results, true);
+  const evaluation::SeedValues* b = constant ? nullptr : Side(claim, results, false);
   r.available = a != nullptr && (constant || b != nullptr);
   if (!r.available) return r;
   const std::string purpose = claim.id + ": " + SideLabel(claim, true) + " < " + SideLabel(claim, false);
-  r.test = constant ? CompareWithConstant(*a, claim.constant_b, purpose, options)
-                    : ComparePaired(*a, *b, purpose, options);
-  r.verdict = LowerVerdict(r.test, options);
+  r.test = constant ? evaluation::CompareWithConstant(*a, claim.constant_b, purpose, options)
+                    : evaluation::ComparePaired(*a, *b, purpose, options);
+  r.verdict = evaluation::LowerVerdict(r.test, options);
   if (claim.metric == ClaimMetric::kAte) {
     r.failed_a = results.Failed(claim.group_a, claim.method_a);
     if (!constant) r.failed_b = results.Failed(claim.group_b, claim.method_b);

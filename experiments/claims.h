@@ -15,19 +15,20 @@
 #include <string>
 #include <vector>
 
-#include "experiments/paired_test.h"
+#include "evaluation/paired_test.h"
 
 namespace vigil::experiments {
 
 // Per-seed results of a sweep, by the names of its groups (table 2 columns) and methods.
 struct SeedResults {
-  std::map<std::string, std::map<std::string, SeedValues>> ate_m;  // group -> method -> ATE RMSE [m]
+  std::map<std::string, std::map<std::string, evaluation::SeedValues>>
+      ate_m;  // group -> method -> ATE RMSE [m]
   // method -> relative error of each seed, pooled over every group and distance (a seed counts only when
   // every group's run of that seed succeeded).
-  std::map<std::string, SeedValues> re_trans_m, re_yaw_deg;
+  std::map<std::string, evaluation::SeedValues> re_trans_m, re_yaw_deg;
   std::map<std::string, std::map<std::string, std::size_t>> failed;  // group -> method -> failed runs
 
-  const SeedValues* Ate(const std::string& group, const std::string& method) const;
+  const evaluation::SeedValues* Ate(const std::string& group, const std::string& method) const;
   std::size_t Failed(const std::string& group, const std::string& method) const;
 };
 
@@ -38,7 +39,7 @@ struct ClaimSpec {
   std::string id, text, paper;
   ClaimMetric metric = ClaimMetric::kAte;
   std::string method_a, group_a, method_b, group_b;  // groups unused for relative errors
-  double constant_b = PairedTest::kNaN;              // finite: b is this constant
+  double constant_b = evaluation::PairedTest::kNaN;  // finite: b is this constant
 };
 
 std::vector<ClaimSpec> PaperClaims();
@@ -46,13 +47,13 @@ std::vector<ClaimSpec> PaperClaims();
 struct ClaimResult {
   ClaimSpec spec;
   bool available = false;  // both sides exist in the results
-  PairedTest test;
-  Verdict verdict = Verdict::kInconclusive;
+  evaluation::PairedTest test;
+  evaluation::Verdict verdict = evaluation::Verdict::kInconclusive;
   std::size_t failed_a = 0, failed_b = 0;  // failed runs on each side (ATE claims)
 };
 
 ClaimResult EvaluateClaim(const ClaimSpec& claim, const SeedResults& results,
-                          const PairedTestOptions& options = {});
+                          const evaluation::PairedTestOptions& options = {});
 
 // The claim with its methods renamed (e.g. trunc -> relative_threshold); `changed` tells whether any was.
 ClaimSpec RenameMethods(ClaimSpec claim, const std::map<std::string, std::string>& rename, bool* changed);

@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 #include "experiments/sweep_aggregate.h"
 
 namespace vigil::experiments {
@@ -70,9 +70,10 @@ std::vector<RocCurve> ReadDetectionRoc(const std::filesystem::path& dir, const S
   AggregateSweep(dir, spec, {}, [&](const SweepRunRef&, const SweepCell& cell, const nlohmann::json* m) {
     if (m == nullptr || !m->contains("detection")) return;
     const nlohmann::json& d = m->at("detection");
-    const double samples = MetricNumber(d, {"samples"}), flagged = MetricNumber(d, {"flagged_samples"});
-    const double glitched = MetricNumber(d, {"glitched_samples"});
-    const double detected = MetricNumber(d, {"detected_glitched_samples"});
+    const double samples = evaluation::MetricNumber(d, {"samples"}),
+                 flagged = evaluation::MetricNumber(d, {"flagged_samples"});
+    const double glitched = evaluation::MetricNumber(d, {"glitched_samples"});
+    const double detected = evaluation::MetricNumber(d, {"detected_glitched_samples"});
     if (!std::isfinite(samples) || !std::isfinite(flagged) || !std::isfinite(glitched) ||
         !std::isfinite(detected))
       return;

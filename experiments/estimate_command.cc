@@ -9,9 +9,9 @@
 #include "core/error.h"
 #include "core/euroc.h"
 #include "core/output.h"
+#include "evaluation/metrics_access.h"
 #include "experiments/external_recording.h"
 #include "experiments/frontend_run.h"
-#include "experiments/metrics_access.h"
 #include "experiments/run.h"
 #include "experiments/run_config.h"
 
@@ -105,7 +105,7 @@ nlohmann::json EstimateToDirectory(const fs::path& dataset, const std::string& c
   status["frames"] = result.frames;
   status["keyframes"] = result.keyframes;
   status["resets"] = result.resets;
-  status["initialized_at_s"] = NumberOrNull(result.initialized_at_s);
+  status["initialized_at_s"] = evaluation::NumberOrNull(result.initialized_at_s);
   status["output_poses"] = result.trajectory.size();
   status["tracked"] = tracked;
   status["dataset"] = fs::absolute(dataset).lexically_normal().string();

@@ -2,7 +2,7 @@
 
 #include <optional>
 
-#include "experiments/statistics.h"
+#include "evaluation/statistics.h"
 
 namespace vigil::experiments {
 namespace {
@@ -16,9 +16,10 @@ nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reproject
       errors_px[*bin].push_back(reprojection.errors_px[i]);
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t b = 0; b < bins.size(); ++b)
-    out.push_back({{"from", bins[b]},
-                   {"to", b + 1 < bins.size() ? nlohmann::json(bins[b + 1] - 1) : nlohmann::json(nullptr)},
-                   {"error_px", StatisticsJson(ComputeStatistics(std::move(errors_px[b])))}});
+    out.push_back(
+        {{"from", bins[b]},
+         {"to", b + 1 < bins.size() ? nlohmann::json(bins[b + 1] - 1) : nlohmann::json(nullptr)},
+         {"error_px", evaluation::StatisticsJson(evaluation::ComputeStatistics(std::move(errors_px[b])))}});
   return out;
 }
 
@@ -56,14 +57,15 @@ nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const
                               {"max", summary.max},
                               {"histogram", histogram}};
   if (reprojection) {
-    j["reprojection"] = {{"error_px", StatisticsJson(ComputeStatistics(reprojection->errors_px))},
-                         {"evaluated", static_cast<int64_t>(reprojection->errors_px.size())},
-                         {"first_observations", reprojection->first_observations},
-                         {"without_truth", reprojection->without_truth},
-                         {"outlier_threshold_px", options.outlier_threshold_px},
-                         {"outliers", reprojection->outliers},
-                         {"outlier_ratio", reprojection->outlier_ratio},
-                         {"error_by_age_px", ErrorsByAgeJson(*reprojection, options.track_length_bins)}};
+    j["reprojection"] = {
+        {"error_px", evaluation::StatisticsJson(evaluation::ComputeStatistics(reprojection->errors_px))},
+        {"evaluated", static_cast<int64_t>(reprojection->errors_px.size())},
+        {"first_observations", reprojection->first_observations},
+        {"without_truth", reprojection->without_truth},
+        {"outlier_threshold_px", options.outlier_threshold_px},
+        {"outliers", reprojection->outliers},
+        {"outlier_ratio", reprojection->outlier_ratio},
+        {"error_by_age_px", ErrorsByAgeJson(*reprojection, options.track_length_bins)}};
   }
   return j;
 }

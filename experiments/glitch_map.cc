@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 #include "experiments/sweep_aggregate.h"
 #include "experiments/sweep_engine.h"
 
@@ -28,7 +28,7 @@ RunTable ReadRuns(const std::filesystem::path& dir, const SweepSpec& spec) {
       ++table.missing[run.cell];
       return;
     }
-    const double ate = MetricNumber(*m, {"ate", "trans_m", "rmse"});
+    const double ate = evaluation::MetricNumber(*m, {"ate", "trans_m", "rmse"});
     if (IsFailed(*m) || !std::isfinite(ate)) {
       ++table.failed[run.cell];
       return;

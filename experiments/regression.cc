@@ -7,8 +7,8 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
-#include "experiments/metrics_access.h"
-#include "experiments/statistics.h"
+#include "evaluation/metrics_access.h"
+#include "evaluation/statistics.h"
 
 namespace vigil::experiments {
 namespace {
@@ -30,7 +30,8 @@ std::vector<RegressionCell> RegressionCells(const SweepAggregate& agg) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
       cells.push_back({"ate_rmse_m", agg.groups[g] + "/" + agg.methods[m],
-                       ComputeStatistics(c.ate_rmse_m).mean, static_cast<long>(c.failed + c.missing)});
+                       evaluation::ComputeStatistics(c.ate_rmse_m).mean,
+                       static_cast<long>(c.failed + c.missing)});
     }
   for (std::size_t m = 0; m < agg.methods.size(); ++m) {
     const CellResult pooled = agg.Pooled(m);
@@ -52,7 +53,7 @@ nlohmann::json BaselineJson(const std::vector<RegressionCell>& cells, const Regr
   j["cells"] = nlohmann::json::array();
   for (const auto& c : cells) {
     nlohmann::json cell = {{"metric", c.metric}, {"cell", c.cell}, {"failed", c.failed}};
-    cell["value"] = NumberOrNull(c.value);
+    cell["value"] = evaluation::NumberOrNull(c.value);
     j["cells"].push_back(cell);
   }
   return j;

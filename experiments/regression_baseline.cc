@@ -9,9 +9,6 @@
 #include "experiments/json_document.h"
 
 namespace vigil::experiments {
-namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-}  // namespace
 
 bool IsRegressionMetric(const std::string& m) {
   return m == "ate_rmse_m" || m == "re_trans_m" || m == "re_yaw_deg";
@@ -91,7 +88,7 @@ void ReadBaselineText(const TextFile& file, std::vector<RegressionCell>* cells,
     // null records a cell whose runs all failed; with no failed run it would disable the cell's check.
     if (list[i]["value"].is_null()) {
       if (cell.failed == 0) doc.Fail(value, "null but no run failed (a cell with runs has a value)");
-      cell.value = kNaN;
+      cell.value = std::numeric_limits<double>::quiet_NaN();
     } else {
       cell.value = number(value);
     }

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "core/output.h"
+#include "evaluation/statistics.h"
 #include "experiments/paper_reference.h"
 #include "experiments/result_table.h"
-#include "experiments/statistics.h"
 #include "experiments/sweep_aggregate.h"
 #include "experiments/sweep_engine.h"
 #include "experiments/tables.h"
@@ -27,7 +27,7 @@ struct PooledRe {
   std::size_t groups_ok = 0;
 };
 
-std::string Interval(const PairedTest& t) {
+std::string Interval(const evaluation::PairedTest& t) {
   return FormatCell(t.mean_diff) + " [" + FormatCell(t.ci_low) + ", " + FormatCell(t.ci_high) + "]";
 }
 
@@ -45,9 +45,9 @@ std::string ClaimRow(const ClaimResult& c, const std::string& label) {
     failures =
         " (failed runs left out: " + std::to_string(c.failed_a) + " / " + std::to_string(c.failed_b) + ")";
   return "| " + label + " | " + c.spec.text + " | " + c.spec.paper + " | " + SideLabel(c.spec, true) + " " +
-         FormatCell(c.test.mean_a) + " vs " + SideLabel(c.spec, false) + " " + FormatCell(c.test.mean_b) + " | " +
-         Interval(c.test) + " | " + std::to_string(c.test.pairs) + failures + " | **" +
-         VerdictName(c.verdict) + "** |\n";
+         FormatCell(c.test.mean_a) + " vs " + SideLabel(c.spec, false) + " " + FormatCell(c.test.mean_b) +
+         " | " + Interval(c.test) + " | " + std::to_string(c.test.pairs) + failures + " | **" +
+         evaluation::VerdictName(c.verdict) + "** |\n";
 }
 
 const char* kClaimHeader =
@@ -75,12 +75,12 @@ ResultTable AteTable(const SeedResults& r, const std::vector<std::string>& metho
   for (const std::string& m : methods) {
     std::vector<double> row;
     for (const char* g : kGroups) {
-      const SeedValues* v = r.Ate(g, m);
+      const evaluation::SeedValues* v = r.Ate(g, m);
       std::vector<double> values;
       if (v)
         for (const auto& [seed, x] : *v)
           if (std::isfinite(x)) values.push_back(x);
-      row.push_back(ComputeStatistics(values).mean);
+      row.push_back(evaluation::ComputeStatistics(values).mean);
     }
     t.values.push_back(row);
   }
@@ -155,7 +155,7 @@ bool HasPaperGrid(const SeedResults& results) {
 
 std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, const SeedResults& results,
                                  const std::map<std::string, SeedResults>& noise_models) {
-  const PairedTestOptions options;
+  const evaluation::PairedTestOptions options;
   std::string s = "# Reproduction of the paper's simulation claims\n\n";
   s += "Sweep `" + sweep + "`, " + std::to_string(seeds) +
        " seeds per cell. Rows `trunc`, `dtw`, `original` are the paper's methods (threshold on the measured "
@@ -196,10 +196,10 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
         const ClaimSpec v = RenameMethods(c, rename, &changed);
         if (!changed) continue;
         const ClaimResult r = EvaluateClaim(v, results, options);
-        if (r.verdict == Verdict::kHolds) holds_with[c.id].push_back(label);
-        s += "| " + c.id + " | " + label + " | " + SideLabel(v, true) + " " + FormatCell(r.test.mean_a) + " vs " +
-             SideLabel(v, false) + " " + FormatCell(r.test.mean_b) + " | " + Interval(r.test) + " | " +
-             std::to_string(r.test.pairs) + " | " + VerdictName(r.verdict) + " |\n";
+        if (r.verdict == evaluation::Verdict::kHolds) holds_with[c.id].push_back(label);
+        s += "| " + c.id + " | " + label + " | " + SideLabel(v, true) + " " + FormatCell(r.test.mean_a) +
+             " vs " + SideLabel(v, false) + " " + FormatCell(r.test.mean_b) + " | " + Interval(r.test) +
+             " | " + std::to_string(r.test.pairs) + " | " + evaluation::VerdictName(r.verdict) + " |\n";
       }
     s += "\n";
     std::vector<std::string> extra = {"trunc", "relative_threshold", "dtw", "normalized_dtw", "original"};
@@ -239,9 +239,9 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
       s += "| " + c.id + " |";
       for (const auto& [model, r] : noise_models) {
         const ClaimResult cr = EvaluateClaim(c, r, options);
-        if (cr.verdict == Verdict::kHolds) holds_with[c.id].push_back("noise model " + model);
-        s += " " + Interval(cr.test) + ", " + VerdictName(cr.verdict) + " (" + std::to_string(cr.test.pairs) +
-             " pairs) |";
+        if (cr.verdict == evaluation::Verdict::kHolds) holds_with[c.id].push_back("noise model " + model);
+        s += " " + Interval(cr.test) + ", " + evaluation::VerdictName(cr.verdict) + " (" +
+             std::to_string(cr.test.pairs) + " pairs) |";
       }
       s += "\n";
     }
@@ -252,15 +252,15 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
          "paper's order of magnitude (>= 6 m) | largest other cell of table 2 [m] | other cells as the "
          "paper's (<= 0.32 m) |\n|---|---|---|---|---|---|---|\n";
     const auto mean_ate = [](const SeedResults& r, const char* group, const char* method) {
-      const SeedValues* v = r.Ate(group, method);
+      const evaluation::SeedValues* v = r.Ate(group, method);
       std::vector<double> values;
       if (v)
         for (const auto& [seed, x] : *v)
           if (std::isfinite(x)) values.push_back(x);
-      return ComputeStatistics(values);
+      return evaluation::ComputeStatistics(values);
     };
     const auto collapse_row = [&](const std::string& model, const SeedResults& r) {
-      const ErrorStatistics st = mean_ate(r, "noise_50_10", "original");
+      const evaluation::ErrorStatistics st = mean_ate(r, "noise_50_10", "original");
       double other = 0.0;
       for (const char* g : kGroups)
         for (const char* m : kPaperMethods)
@@ -278,9 +278,9 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
   s += "## Claims that do not hold (or are inconclusive), and the ablations under which they hold\n\n";
   bool any = false;
   for (const ClaimResult& c : main) {
-    if (c.verdict == Verdict::kHolds) continue;
+    if (c.verdict == evaluation::Verdict::kHolds) continue;
     any = true;
-    s += "- " + c.spec.id + " (" + c.spec.text + "): " + VerdictName(c.verdict) + " here; ";
+    s += "- " + c.spec.id + " (" + c.spec.text + "): " + evaluation::VerdictName(c.verdict) + " here; ";
     const auto it = holds_with.find(c.spec.id);
     if (it == holds_with.end()) {
       s += "no ablation of this sweep makes it hold.";

@@ -4,7 +4,7 @@
 
 #include "core/format.h"
 #include "core/staging.h"
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -75,7 +75,7 @@ std::string ResultsCsvWriter::TimingHeader() {
 std::string ResultsCsvWriter::TimingRow(const SweepRunRef& run, const nlohmann::json& m) {
   std::string r = run.id;
   for (const char* stage : {"simulate", "templates", "detect", "estimate", "evaluate", "total"})
-    r += "," + Number(MetricNumber(m, {"wall_time_s", stage}));
+    r += "," + Number(evaluation::MetricNumber(m, {"wall_time_s", stage}));
   return r;
 }
 
@@ -102,29 +102,30 @@ std::string ResultsCsvWriter::Row(const SweepRunRef& run, const SweepCell& cell,
   for (std::size_t a = 0; a < spec_.axes.size(); ++a)
     r += "," + spec_.axes[a].settings[cell.setting[a]].label;
   r += "," + spec_.methods[cell.method].label + "," + std::to_string(run.seed);
-  r += "," + Text(MetricText(m, "status")) + "," + Text(MetricText(m, "failure_reason"));
+  r += "," + Text(evaluation::MetricText(m, "status")) + "," +
+       Text(evaluation::MetricText(m, "failure_reason"));
   for (const char* stat : {"rmse", "mean", "median", "std", "max"})
-    r += "," + Number(MetricNumber(m, {"ate", "trans_m", stat}));
-  r += "," + Number(MetricNumber(m, {"ate", "rot_deg", "rmse"}));
+    r += "," + Number(evaluation::MetricNumber(m, {"ate", "trans_m", stat}));
+  r += "," + Number(evaluation::MetricNumber(m, {"ate", "rot_deg", "rmse"}));
   for (double d : distances_m_) {
-    const nlohmann::json* e = RelativeEntry(m, d);
+    const nlohmann::json* e = evaluation::RelativeEntry(m, d);
     const nlohmann::json none;
     const nlohmann::json& entry = e ? *e : none;
-    r += "," + Number(MetricNumber(entry, {"trans_m", "mean"})) + "," +
-         Number(MetricNumber(entry, {"yaw_deg", "mean"})) + "," +
-         Number(MetricNumber(entry, {"trans_m", "n"}));
+    r += "," + Number(evaluation::MetricNumber(entry, {"trans_m", "mean"})) + "," +
+         Number(evaluation::MetricNumber(entry, {"yaw_deg", "mean"})) + "," +
+         Number(evaluation::MetricNumber(entry, {"trans_m", "n"}));
   }
   const auto det = m.find("detection");
-  r += "," + (det != m.end() ? Text(MetricText(*det, "detector")) : std::string());
+  r += "," + (det != m.end() ? Text(evaluation::MetricText(*det, "detector")) : std::string());
   for (const char* key : {"flagged_samples", "glitched_samples", "precision", "recall", "f1"})
-    r += "," + Number(MetricNumber(m, {"detection", key}));
-  r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "raw"}));
-  r += "," + Number(MetricNumber(m, {"detection", "imu_rmse_vs_clean", "cleaned"}));
+    r += "," + Number(evaluation::MetricNumber(m, {"detection", key}));
+  r += "," + Number(evaluation::MetricNumber(m, {"detection", "imu_rmse_vs_clean", "raw"}));
+  r += "," + Number(evaluation::MetricNumber(m, {"detection", "imu_rmse_vs_clean", "cleaned"}));
   for (const char* key : {"false_positive_rate", "segment_precision", "segment_f1"})
-    r += "," + Number(MetricNumber(m, {"detection", key}));
-  r += "," + Number(MetricNumber(m, {"estimator", "resets"}));
-  r += "," + Number(MetricNumber(m, {"nees", "position", "mean"}));
-  r += "," + Number(MetricNumber(m, {"nees", "orientation", "mean"}));
+    r += "," + Number(evaluation::MetricNumber(m, {"detection", key}));
+  r += "," + Number(evaluation::MetricNumber(m, {"estimator", "resets"}));
+  r += "," + Number(evaluation::MetricNumber(m, {"nees", "position", "mean"}));
+  r += "," + Number(evaluation::MetricNumber(m, {"nees", "orientation", "mean"}));
   return r;
 }
 

@@ -11,8 +11,8 @@
 #include "core/euroc.h"
 #include "core/output.h"
 #include "estimator/run_estimator.h"
+#include "evaluation/evaluate_trajectory.h"
 #include "experiments/detection_stage.h"
-#include "experiments/evaluate_trajectory.h"
 #include "experiments/external_estimator.h"
 #include "experiments/frontend_run.h"
 #include "experiments/imu_axis_record.h"
@@ -153,11 +153,13 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
 
   t = Clock::now();
   const Trajectory groundtruth = GroundTruthAtFrames(data.dataset.groundtruth, data.dataset.frames);
-  TrajectoryEvaluation evaluation = data.with_groundtruth
-                                        ? EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
-                                        : TrajectoryEvaluation{};
+  evaluation::TrajectoryEvaluation evaluation =
+      data.with_groundtruth
+          ? evaluation::EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
+          : evaluation::TrajectoryEvaluation{};
   if (data.with_groundtruth)
-    evaluation.nees = ComputeNees(groundtruth, result.trajectory, result.pose_covariances, evaluation.alignment);
+    evaluation.nees = evaluation::ComputeNees(groundtruth, result.trajectory, result.pose_covariances,
+                                              evaluation.alignment);
   summary.wall.evaluate_s = SecondsSince(t);
 
   RunConfig resolved = config;  // ToYaml visits (non-const)

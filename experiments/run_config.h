@@ -11,7 +11,7 @@
 #include "core/config.h"
 #include "detectors/detector_options.h"
 #include "estimator/estimator_options.h"
-#include "experiments/evaluation_options.h"
+#include "evaluation/evaluation_options.h"
 #include "experiments/external_estimator_options.h"
 #include "frontend/frontend_options.h"
 #include "sim/sim_options.h"
@@ -24,7 +24,7 @@ struct RunConfig {
   frontend::FrontendOptions frontend;
   detectors::DetectorOptions detector;
   RunEstimatorOptions estimator;  // vigil's estimator's options, and which estimator runs
-  EvaluationOptions evaluation;
+  evaluation::EvaluationOptions evaluation;
 
   template <class V>
   void Visit(V& v) {

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "core/format.h"
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 
 namespace vigil::experiments {
 namespace {
@@ -14,7 +14,8 @@ double PerFrameMs(double seconds, int frames) { return frames > 0 ? 1e3 * second
 }  // namespace
 
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
-                              const TrajectoryEvaluation& evaluation, const nlohmann::json& detection) {
+                              const evaluation::TrajectoryEvaluation& evaluation,
+                              const nlohmann::json& detection) {
   nlohmann::json m;
   // An estimate whose errors cannot be computed (no matched pose, non-finite values) is no success; one
   // whose error leaves the divergence bound (evaluation_options.h) is diverged.
@@ -43,7 +44,7 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                       {"estimate", w.estimate_s}, {"evaluate", w.evaluate_s},   {"total", w.total_s}};
   const estimator::EstimatorTiming& t = result.timing;
   m["estimator"] = {{"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
-                    {"initialized_at_s", NumberOrNull(result.initialized_at_s)},
+                    {"initialized_at_s", evaluation::NumberOrNull(result.initialized_at_s)},
                     {"resets", result.resets},
                     {"stops", result.stops},
                     {"failure_checks", result.failure_checks},
@@ -69,7 +70,7 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                                   {"gate_tests", mit.gate_tests},
                                   {"gated_factors", mit.gated_factors},
                                   {"gated_resolves", mit.gated_resolves}};
-  m.update(EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
+  m.update(evaluation::EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
   m["detection"] = detection;
   return m;
 }
@@ -93,19 +94,21 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   }
   const nlohmann::json& ate = m.at("ate");
   std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
-                MetricNumber(ate, {"trans_m", "rmse"}), ate.at("align").get<std::string>().c_str(),
-                100.0 * MetricNumber(m, {"coverage"}));
+                evaluation::MetricNumber(ate, {"trans_m", "rmse"}),
+                ate.at("align").get<std::string>().c_str(),
+                100.0 * evaluation::MetricNumber(m, {"coverage"}));
   s += buf;
   if (!m.at("relative").empty()) {
     const nlohmann::json& r = m.at("relative").front();
-    std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", MetricNumber(r, {"distance_m"}),
-                  MetricNumber(r, {"trans_m", "mean"}), MetricNumber(r, {"yaw_deg", "mean"}));
+    std::snprintf(
+        buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", evaluation::MetricNumber(r, {"distance_m"}),
+        evaluation::MetricNumber(r, {"trans_m", "mean"}), evaluation::MetricNumber(r, {"yaw_deg", "mean"}));
     s += buf;
   }
-  const double nees_p = MetricNumber(m, {"nees", "position", "mean"});
+  const double nees_p = evaluation::MetricNumber(m, {"nees", "position", "mean"});
   if (std::isfinite(nees_p)) {
     std::snprintf(buf, sizeof(buf), ", NEES %.2f pos / %.2f rot (3 = consistent)", nees_p,
-                  MetricNumber(m, {"nees", "orientation", "mean"}));
+                  evaluation::MetricNumber(m, {"nees", "orientation", "mean"}));
     s += buf;
   }
   // A dropped marginalization prior (the window then holds only its own information) is said.
@@ -118,11 +121,12 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   // Per-sample scores where the run knows the glitches (a detector that flags everything shows here).
   if (detection.contains("precision") && detection.value("detector", std::string("none")) != "none") {
     std::snprintf(buf, sizeof(buf), " (precision %.3f, recall %.3f, false positives %.2f %%)",
-                  MetricNumber(detection, {"precision"}), MetricNumber(detection, {"recall"}),
-                  100.0 * MetricNumber(detection, {"false_positive_rate"}));
+                  evaluation::MetricNumber(detection, {"precision"}),
+                  evaluation::MetricNumber(detection, {"recall"}),
+                  100.0 * evaluation::MetricNumber(detection, {"false_positive_rate"}));
     s += buf;
   }
-  std::snprintf(buf, sizeof(buf), ", wall %.2f s", MetricNumber(m, {"wall_time_s", "total"}));
+  std::snprintf(buf, sizeof(buf), ", wall %.2f s", evaluation::MetricNumber(m, {"wall_time_s", "total"}));
   return s + buf;
 }
 

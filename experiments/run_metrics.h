@@ -9,7 +9,7 @@
 
 #include "estimator/estimator_input.h"
 #include "estimator/estimator_options.h"
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 
 namespace vigil::experiments {
 
@@ -34,7 +34,8 @@ struct RunSummary {
 // error and the bound as failure_reason) when evaluation.diverged, else "ok"; the evaluation describes what the
 // estimator produced (possibly nothing); `detection` is the "detection" object (detection_stage.h).
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
-                              const TrajectoryEvaluation& evaluation, const nlohmann::json& detection);
+                              const evaluation::TrajectoryEvaluation& evaluation,
+                              const nlohmann::json& detection);
 
 // A run of a recording without ground truth: the estimate is written, the metrics are not computed. Sets
 // status from the estimator alone ("ok" or "failed" with its reason) and "evaluation": kEvaluationSkipped;

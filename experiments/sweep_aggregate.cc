@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "core/output.h"
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 #include "experiments/run_metrics_file.h"
 #include "experiments/sweep_engine.h"
 
@@ -80,33 +80,33 @@ void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances
   ++cell->runs;
   if (IsFailed(m)) {
     ++cell->failed;
-    std::string reason = MetricText(m, "failure_reason");
+    std::string reason = evaluation::MetricText(m, "failure_reason");
     ++cell->failure_reasons[reason.empty() ? "(no reason given)" : reason];
     return;
   }
   if (IsDiverged(m)) ++cell->diverged;
-  const double ate = MetricNumber(m, {"ate", "trans_m", "rmse"});
+  const double ate = evaluation::MetricNumber(m, {"ate", "trans_m", "rmse"});
   if (std::isfinite(ate)) cell->ate_rmse_m.push_back(ate);
   for (std::size_t d = 0; d < nd; ++d) {
-    const nlohmann::json* e = RelativeEntry(m, distances_m[d]);
+    const nlohmann::json* e = evaluation::RelativeEntry(m, distances_m[d]);
     if (!e) continue;
-    const double n = MetricNumber(*e, {"trans_m", "n"});
-    const double trans = MetricNumber(*e, {"trans_m", "mean"});
-    const double yaw = MetricNumber(*e, {"yaw_deg", "mean"});
+    const double n = evaluation::MetricNumber(*e, {"trans_m", "n"});
+    const double trans = evaluation::MetricNumber(*e, {"trans_m", "mean"});
+    const double yaw = evaluation::MetricNumber(*e, {"yaw_deg", "mean"});
     if (!(n > 0) || !std::isfinite(trans) || !std::isfinite(yaw)) continue;
     cell->re_trans_weighted[d] += trans * n;
     cell->re_yaw_weighted[d] += yaw * n;
     cell->re_n[d] += n;
     cell->re_trans_run_means[d].push_back(trans);
   }
-  const double flagged = MetricNumber(m, {"detection", "flagged_samples"});
-  const double glitched = MetricNumber(m, {"detection", "glitched_samples"});
-  const double recall = MetricNumber(m, {"detection", "recall"});
+  const double flagged = evaluation::MetricNumber(m, {"detection", "flagged_samples"});
+  const double glitched = evaluation::MetricNumber(m, {"detection", "glitched_samples"});
+  const double recall = evaluation::MetricNumber(m, {"detection", "recall"});
   if (std::isfinite(flagged)) cell->flagged += flagged;
   if (std::isfinite(glitched)) {
     cell->glitched += glitched;
     if (std::isfinite(recall)) cell->true_flagged += std::round(recall * glitched);
-    const double samples = MetricNumber(m, {"detection", "samples"});
+    const double samples = evaluation::MetricNumber(m, {"detection", "samples"});
     if (std::isfinite(samples) && std::isfinite(flagged)) {
       cell->scored_samples += samples;
       cell->scored_flagged += flagged;

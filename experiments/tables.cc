@@ -7,10 +7,10 @@
 #include "core/format.h"
 #include "core/output.h"
 #include "core/staging.h"
+#include "evaluation/statistics.h"
 #include "experiments/paper_reference.h"
 #include "experiments/reproduction.h"
 #include "experiments/results_csv.h"
-#include "experiments/statistics.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -57,7 +57,8 @@ ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>
     const int mi = agg.MethodIndex(methods[m]);
     if (mi < 0) continue;
     for (std::size_t g = 0; g < agg.groups.size(); ++g)
-      t.values[m][g] = ComputeStatistics(agg.Cell(g, static_cast<std::size_t>(mi)).ate_rmse_m).mean;
+      t.values[m][g] =
+          evaluation::ComputeStatistics(agg.Cell(g, static_cast<std::size_t>(mi)).ate_rmse_m).mean;
   }
   return t;
 }
@@ -113,7 +114,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   for (std::size_t g = 0; g < agg.groups.size(); ++g) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
       const CellResult& c = agg.Cell(g, m);
-      const ErrorStatistics st = ComputeStatistics(c.ate_rmse_m);
+      const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
            std::to_string(c.ok()) + " | " + std::to_string(c.diverged) + " | " + std::to_string(c.failed) +
            " | " + std::to_string(c.missing) +
@@ -128,7 +129,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   for (std::size_t m = 0; m < agg.methods.size(); ++m) {
     const CellResult pooled = agg.Pooled(m);
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
-      const ErrorStatistics st = ComputeStatistics(pooled.re_trans_run_means[d]);
+      const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(pooled.re_trans_run_means[d]);
       s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
            FormatDouble(pooled.re_n[d]) + " | " + FormatCell(pooled.PooledReTrans(d)) + " | " + FormatCell(st.std) + " | " +
            FormatCell(st.median) + " |\n";

@@ -6,7 +6,7 @@
 #include <map>
 #include <string_view>
 
-#include "experiments/metrics_access.h"
+#include "evaluation/metrics_access.h"
 #include "plots/axes.h"
 #include "plots/trajectory_alignment.h"
 
@@ -28,7 +28,7 @@ std::vector<Eigen::Vector3d> Positions(const Trajectory& trajectory) {
 
 // The number at `path` in a metrics document when it is there and finite.
 bool Stat(const nlohmann::json& metrics, std::initializer_list<std::string_view> path, double* value) {
-  *value = experiments::MetricNumber(metrics, path);
+  *value = evaluation::MetricNumber(metrics, path);
   return std::isfinite(*value);
 }
 

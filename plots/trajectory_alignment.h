@@ -6,13 +6,13 @@
 #pragma once
 
 #include "core/types.h"
-#include "experiments/evaluation_options.h"
+#include "evaluation/evaluation_options.h"
 
 namespace vigil::plots {
 
 // The poses of `estimate` associated with a ground-truth pose (rpg rule, within 0.02 s), transformed by the
 // alignment of the given kind over the matched positions. Timestamps must increase strictly.
 Trajectory AlignForDisplay(const Trajectory& estimate, const Trajectory& groundtruth,
-                           experiments::Alignment alignment);
+                           evaluation::Alignment alignment);
 
 }  // namespace vigil::plots

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "estimator/run_estimator.h"
-#include "experiments/nees.h"
+#include "evaluation/nees.h"
 #include "tests/estimator/sim_run.h"
 
 namespace vigil::estimator {
@@ -94,10 +94,10 @@ TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
     ASSERT_TRUE(InterpolateNavState(data.groundtruth, pose.t_ns, &truth));
     gt.push_back({pose.t_ns, truth.p_W, truth.q_WB});
   }
-  const experiments::TrajectoryEvaluation ev =
-      experiments::EvaluateTrajectory(gt, result.trajectory, experiments::EvaluationOptions{});
-  const experiments::NeesStatistics nees =
-      experiments::ComputeNees(gt, result.trajectory, result.pose_covariances, ev.alignment);
+  const evaluation::TrajectoryEvaluation ev =
+      evaluation::EvaluateTrajectory(gt, result.trajectory, evaluation::EvaluationOptions{});
+  const evaluation::NeesStatistics nees =
+      evaluation::ComputeNees(gt, result.trajectory, result.pose_covariances, ev.alignment);
   std::printf("NEES position %.2f orientation %.2f over %lld poses, covariance %.3f s of optimize %.3f s\n",
               nees.position.mean, nees.orientation.mean, static_cast<long long>(nees.position.n),
               result.timing.covariance_s, result.timing.optimize_s);

@@ -1,5 +1,5 @@
 // Test/bench helpers: the estimator input of a simulated recording and its ATE, both through the same code a
-// `vigil run` uses (experiments::MakeEstimatorInput, experiments::EvaluateTrajectory with posyaw alignment),
+// `vigil run` uses (experiments::MakeEstimatorInput, evaluation::EvaluateTrajectory with posyaw alignment),
 // so the estimator's own accuracy checks measure what the runs report.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 #include "core/interpolation.h"
 #include "estimator/estimator_input.h"
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 #include "experiments/run_inputs.h"
 #include "sim/simulator.h"
 
@@ -34,7 +34,7 @@ inline double PosYawAteRmse(const std::vector<NavState>& estimate, const std::ve
     gt.push_back({truth.t_ns, truth.p_W, truth.q_WB});
   }
   if (est.empty()) return std::nan("");
-  return experiments::EvaluateTrajectory(gt, est, experiments::EvaluationOptions{}).ate_trans_m.rmse;
+  return evaluation::EvaluateTrajectory(gt, est, evaluation::EvaluationOptions{}).ate_trans_m.rmse;
 }
 
 }  // namespace vigil::estimator::testing

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/random.h"
-#include "experiments/paired_test.h"
+#include "evaluation/paired_test.h"
 #include "experiments/reproduction.h"
 
 namespace vigil::experiments {
@@ -11,16 +11,17 @@ namespace {
 
 // Ten seeds of base + offset + seed-to-seed noise of the given std (shared noise when `shared` is true: a
 // paired design sees through it).
-SeedValues Series(double mean, double noise_std, uint64_t stream) {
+evaluation::SeedValues Series(double mean, double noise_std, uint64_t stream) {
   Rng rng(stream, "series");
-  SeedValues v;
+  evaluation::SeedValues v;
   for (uint64_t seed = 1; seed <= 10; ++seed) v[seed] = mean + noise_std * rng.Normal();
   return v;
 }
 
-SeedValues Shifted(const SeedValues& base, double shift, double noise_std, uint64_t stream) {
+evaluation::SeedValues Shifted(const evaluation::SeedValues& base, double shift, double noise_std,
+                               uint64_t stream) {
   Rng rng(stream, "shift");
-  SeedValues v;
+  evaluation::SeedValues v;
   for (const auto& [seed, x] : base) v[seed] = x + shift + noise_std * rng.Normal();
   return v;
 }
@@ -41,35 +42,6 @@ const ClaimSpec& Claim(const std::string& id) {
   throw std::logic_error("no claim " + id);
 }
 
-TEST(PairedTest, AClearWinHoldsAClearLossDoesNotAndATieIsInconclusive) {
-  const SeedValues base = Series(0.3, 0.1, 1);
-  const SeedValues better = Shifted(base, -0.05, 0.01, 2), worse = Shifted(base, 0.05, 0.01, 3),
-                   same = Shifted(base, 0.0, 0.01, 4);
-  const PairedTest win = ComparePaired(better, base, "win");
-  EXPECT_EQ(win.pairs, 10u);
-  EXPECT_LT(win.ci_high, 0.0);
-  EXPECT_NEAR(win.mean_diff, -0.05, 0.01);
-  EXPECT_EQ(LowerVerdict(win), Verdict::kHolds);
-  EXPECT_EQ(LowerVerdict(ComparePaired(worse, base, "loss")), Verdict::kDoesNotHold);
-  const PairedTest tie = ComparePaired(same, base, "tie");
-  EXPECT_LT(tie.ci_low, 0.0);
-  EXPECT_GT(tie.ci_high, 0.0);
-  EXPECT_EQ(LowerVerdict(tie), Verdict::kInconclusive);
-}
-
-TEST(PairedTest, IsDeterministicAndPairsOnlyCommonFiniteSeeds) {
-  SeedValues a = Series(1.0, 0.2, 5), b = Series(1.2, 0.2, 6);
-  const PairedTest t1 = ComparePaired(a, b, "same purpose"), t2 = ComparePaired(a, b, "same purpose");
-  EXPECT_EQ(t1.ci_low, t2.ci_low);
-  EXPECT_EQ(t1.ci_high, t2.ci_high);
-  a[3] = PairedTest::kNaN;  // a failed run
-  b.erase(7);               // a missing run
-  EXPECT_EQ(ComparePaired(a, b, "p").pairs, 8u);
-  const SeedValues two = {{1, 0.1}, {2, 0.2}};
-  EXPECT_EQ(LowerVerdict(ComparePaired(two, {{1, 5.0}, {2, 6.0}}, "p")), Verdict::kInconclusive);
-  EXPECT_EQ(LowerVerdict(CompareWithConstant(Series(0.05, 0.005, 7), 0.1, "c")), Verdict::kHolds);
-}
-
 TEST(Claims, PaperLikeResultsMakeEveryTable2ClaimHold) {
   // The paper's table 2 as the true means, a shared per-seed level and small independent noise.
   const std::map<std::string, std::map<std::string, double>> paper = {
@@ -87,30 +59,31 @@ TEST(Claims, PaperLikeResultsMakeEveryTable2ClaimHold) {
   for (const ClaimSpec& c : PaperClaims()) {
     const ClaimResult res = EvaluateClaim(c, r);
     EXPECT_TRUE(res.available) << c.id;
-    EXPECT_EQ(res.verdict, Verdict::kHolds) << c.id << " " << res.test.ci_low << " " << res.test.ci_high;
+    EXPECT_EQ(res.verdict, evaluation::Verdict::kHolds)
+        << c.id << " " << res.test.ci_low << " " << res.test.ci_high;
   }
 }
 
 TEST(Claims, ALossAndATieAreJudgedAsSuch) {
   // trunc clearly below dtw at N(50,10) (d1 does not hold); trunc and dtw equal at N(0,1) (c1 inconclusive).
   uint64_t stream = 100;
-  const SeedValues level = Series(0.05, 0.01, 2);
+  const evaluation::SeedValues level = Series(0.05, 0.01, 2);
   const SeedResults r = Grid([&](const std::string& g, const std::string& m) {
     if (g == "noise_50_10" && m == "dtw") return Shifted(level, 0.03, 0.002, ++stream);
     if (g == "noise_0_1" && m == "dtw") {  // differences +-0.01 in turn: mean exactly 0
-      SeedValues v = level;
+      evaluation::SeedValues v = level;
       for (auto& [seed, x] : v) x += seed % 2 ? 0.01 : -0.01;
       return v;
     }
     if (g == "noise_0_1" && m == "trunc") return level;
     return Shifted(level, 0.0, 0.002, ++stream);
   });
-  EXPECT_EQ(EvaluateClaim(Claim("d1"), r).verdict, Verdict::kDoesNotHold);
-  EXPECT_EQ(EvaluateClaim(Claim("c1"), r).verdict, Verdict::kInconclusive);
+  EXPECT_EQ(EvaluateClaim(Claim("d1"), r).verdict, evaluation::Verdict::kDoesNotHold);
+  EXPECT_EQ(EvaluateClaim(Claim("c1"), r).verdict, evaluation::Verdict::kInconclusive);
   // Relative-error claims without relative errors are unavailable, hence inconclusive.
   const ClaimResult d2 = EvaluateClaim(Claim("d2"), r);
   EXPECT_FALSE(d2.available);
-  EXPECT_EQ(d2.verdict, Verdict::kInconclusive);
+  EXPECT_EQ(d2.verdict, evaluation::Verdict::kInconclusive);
 }
 
 TEST(Claims, RenamingSwapsInVigilsVariants) {
@@ -133,7 +106,8 @@ TEST(Reproduction, SplitsTheNoiseAblationByModelAndKnowsThePaperGrid) {
   EXPECT_EQ(split.at("vins_euroc").Ate("noise_0_1", "original")->at(1), 3.0);
   EXPECT_EQ(split.at("vins_euroc").Failed("noise_0_1", "original"), 2u);
   EXPECT_FALSE(HasPaperGrid(r));
-  EXPECT_TRUE(HasPaperGrid(Grid([](const std::string&, const std::string&) { return SeedValues{}; })));
+  EXPECT_TRUE(
+      HasPaperGrid(Grid([](const std::string&, const std::string&) { return evaluation::SeedValues{}; })));
   const std::string md = ReproductionMarkdown(
       "x.yaml", 10, Grid([](const std::string&, const std::string&) { return Series(0.1, 0.01, 1); }), {});
   EXPECT_NE(md.find("| a1 |"), std::string::npos);

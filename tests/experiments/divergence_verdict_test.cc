@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 #include "experiments/run_metrics.h"
 #include "experiments/sweep_aggregate.h"
 
@@ -35,7 +35,7 @@ Trajectory DriftedUpward(const Trajectory& gt, double final_drift_m) {
   return est;
 }
 
-nlohmann::json VerdictMetrics(const TrajectoryEvaluation& evaluation) {
+nlohmann::json VerdictMetrics(const evaluation::TrajectoryEvaluation& evaluation) {
   RunSummary summary;
   estimator::EstimatorResult result;  // the estimator finished without a failure
   return RunMetricsJson(summary, result, evaluation, {{"detector", "none"}});
@@ -43,7 +43,8 @@ nlohmann::json VerdictMetrics(const TrajectoryEvaluation& evaluation) {
 
 TEST(DivergenceVerdict, AKilometreOfDriftIn70SecondsIsDiverged) {
   const Trajectory gt = SeventyMetreLine();
-  const TrajectoryEvaluation ev = EvaluateTrajectory(gt, DriftedUpward(gt, 1000.0), EvaluationOptions{});
+  const evaluation::TrajectoryEvaluation ev =
+      evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 1000.0), evaluation::EvaluationOptions{});
   EXPECT_NEAR(ev.gt_length_m, 70.0, 1e-6);
   // Bound: 0.4 % of 70 m + 0.5 m.
   EXPECT_NEAR(ev.divergence_bound_m, 0.78, 1e-9);
@@ -58,7 +59,8 @@ TEST(DivergenceVerdict, AKilometreOfDriftIn70SecondsIsDiverged) {
 
 TEST(DivergenceVerdict, AGoodRunIsOk) {
   const Trajectory gt = SeventyMetreLine();
-  const TrajectoryEvaluation ev = EvaluateTrajectory(gt, DriftedUpward(gt, 0.1), EvaluationOptions{});
+  const evaluation::TrajectoryEvaluation ev =
+      evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 0.1), evaluation::EvaluationOptions{});
   EXPECT_FALSE(ev.diverged);
   const nlohmann::json m = VerdictMetrics(ev);
   EXPECT_EQ(m["status"], "ok");
@@ -68,20 +70,22 @@ TEST(DivergenceVerdict, AGoodRunIsOk) {
 // The bound sits where the options put it: an error just above it is diverged, just below it is ok.
 TEST(DivergenceVerdict, TheBoundFollowsTheOptions) {
   const Trajectory gt = SeventyMetreLine();
-  EvaluationOptions options;
+  evaluation::EvaluationOptions options;
   options.divergence.length_fraction = 0.01;  // 0.7 m over 70 m
   options.divergence.margin_m = 0.3;          // bound 1.0 m
   // A linear drift to D has an RMSE of about D / sqrt(12) once the alignment removes its mean offset.
-  EXPECT_FALSE(EvaluateTrajectory(gt, DriftedUpward(gt, 3.2), options).diverged);
-  EXPECT_TRUE(EvaluateTrajectory(gt, DriftedUpward(gt, 3.8), options).diverged);
+  EXPECT_FALSE(evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 3.2), options).diverged);
+  EXPECT_TRUE(evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 3.8), options).diverged);
 }
 
 // A failed estimator stays failed whatever its error; a diverged run is counted as diverged and its error
 // still enters the cell's mean (the tables' means are those of every finished run).
 TEST(DivergenceVerdict, SweepCellsCountDivergedRunsAndKeepTheirErrors) {
   const Trajectory gt = SeventyMetreLine();
-  const TrajectoryEvaluation bad = EvaluateTrajectory(gt, DriftedUpward(gt, 1000.0), EvaluationOptions{});
-  const TrajectoryEvaluation good = EvaluateTrajectory(gt, DriftedUpward(gt, 0.1), EvaluationOptions{});
+  const evaluation::TrajectoryEvaluation bad =
+      evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 1000.0), evaluation::EvaluationOptions{});
+  const evaluation::TrajectoryEvaluation good =
+      evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 0.1), evaluation::EvaluationOptions{});
   estimator::EstimatorResult failed;
   failed.ok = false;
   failed.failure_reason = "gyro bias norm 1.2 rad/s";

@@ -23,7 +23,7 @@ TEST(RunConfig, SpecKeysExistWithTheirTypes) {
   EXPECT_FALSE(c.sim.imu.noise.enabled);
   EXPECT_EQ(c.sim.camera.pixel_noise_px, 0.5);
   EXPECT_EQ(c.sim.glitch.axes, (std::vector<ImuAxis>{ImuAxis::kAx, ImuAxis::kAz}));
-  EXPECT_EQ(c.evaluation.align, Alignment::kSe3);
+  EXPECT_EQ(c.evaluation.align, evaluation::Alignment::kSe3);
   EXPECT_EQ(c.evaluation.distances_m, (std::vector<double>{7.0, 14.0}));
 }
 

@@ -16,7 +16,7 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
   result.frames = 100;
   result.timing.optimize_s = 0.2;
   const nlohmann::json detection = {{"detector", "none"}, {"flagged_samples", 0}};
-  const nlohmann::json m = RunMetricsJson(summary, result, TrajectoryEvaluation{}, detection);
+  const nlohmann::json m = RunMetricsJson(summary, result, evaluation::TrajectoryEvaluation{}, detection);
   EXPECT_EQ(m["status"], "failed");
   EXPECT_EQ(m["failure_reason"], "diverged: |b_a| > 2.5");
   EXPECT_EQ(m["seed"], 3);
@@ -37,7 +37,8 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
 
   // A failed marginalization (the prior was dropped) is counted and said.
   result.marginalization_failures = 2;
-  const nlohmann::json dropped = RunMetricsJson(summary, result, TrajectoryEvaluation{}, detection);
+  const nlohmann::json dropped =
+      RunMetricsJson(summary, result, evaluation::TrajectoryEvaluation{}, detection);
   EXPECT_EQ(dropped["estimator"]["marginalization_failures"], 2);
   EXPECT_NE(RunSummaryLine(dropped).find(", 2 failed marginalizations (prior dropped), detector none"),
             std::string::npos)

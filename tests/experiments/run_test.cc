@@ -4,7 +4,7 @@
 
 #include "core/dataset.h"
 #include "core/output.h"
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 #include "experiments/imu_axis_record.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
@@ -59,7 +59,8 @@ TEST(Run, ShortRunEndToEnd) {
   const Trajectory gt = ReadTumTrajectory((dir / "stamped_groundtruth.txt").string());
   const Trajectory est = ReadTumTrajectory((dir / "stamped_traj_estimate.txt").string());
   EXPECT_EQ(gt.size(), 121u);  // every camera frame of 4 s at 30 Hz
-  const TrajectoryEvaluation again = EvaluateTrajectory(gt, est, EvaluationOptions{});
+  const evaluation::TrajectoryEvaluation again =
+      evaluation::EvaluateTrajectory(gt, est, evaluation::EvaluationOptions{});
   EXPECT_NEAR(again.ate_trans_m.rmse, m["ate"]["trans_m"]["rmse"].get<double>(), 1e-9);
   // config.yaml reproduces the run's configuration.
   EXPECT_EQ(ReadFile(dir / "config.yaml"), [] {

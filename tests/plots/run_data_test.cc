@@ -70,15 +70,15 @@ TEST(TrajectoryAlignment, PosYawUndoesAYawAndATranslation) {
     if (i >= 5)
       est.push_back({i * 100'000'000LL + 1000, yaw * p + Eigen::Vector3d(1, 2, 3), Eigen::Quaterniond(yaw)});
   }
-  const Trajectory aligned = AlignForDisplay(est, gt, experiments::Alignment::kPosYaw);
+  const Trajectory aligned = AlignForDisplay(est, gt, evaluation::Alignment::kPosYaw);
   ASSERT_EQ(aligned.size(), 45u);
   for (std::size_t i = 0; i < aligned.size(); ++i) {
     EXPECT_NEAR((aligned[i].p_W - gt[i + 5].p_W).norm(), 0.0, 1e-9);
     EXPECT_NEAR(aligned[i].q_WB.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-9);
   }
-  const Trajectory se3 = AlignForDisplay(est, gt, experiments::Alignment::kSe3);
+  const Trajectory se3 = AlignForDisplay(est, gt, evaluation::Alignment::kSe3);
   EXPECT_NEAR((se3.back().p_W - gt.back().p_W).norm(), 0.0, 1e-6);
-  const Trajectory none = AlignForDisplay(est, gt, experiments::Alignment::kNone);
+  const Trajectory none = AlignForDisplay(est, gt, evaluation::Alignment::kNone);
   EXPECT_NEAR((none.back().p_W - est.back().p_W).norm(), 0.0, 1e-12);
 }
 

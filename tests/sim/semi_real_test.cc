@@ -11,7 +11,7 @@
 #include "core/euroc.h"
 #include "core/output.h"
 #include "estimator/run_estimator.h"
-#include "experiments/evaluate_trajectory.h"
+#include "evaluation/evaluate_trajectory.h"
 #include "experiments/run_config.h"
 #include "experiments/run_inputs.h"
 #include "sim/camera_simulator.h"
@@ -227,7 +227,7 @@ TEST(SemiReal, TheEstimatorRunsOnRecordedTimes) {
   const std::vector<int64_t> frames = TimesOf(d.frames);
   for (const StampedPose& p : r.trajectory)
     EXPECT_TRUE(std::binary_search(frames.begin(), frames.end(), p.t_ns)) << p.t_ns;
-  const experiments::TrajectoryEvaluation e = experiments::EvaluateTrajectory(
+  const evaluation::TrajectoryEvaluation e = evaluation::EvaluateTrajectory(
       experiments::GroundTruthAtFrames(d.groundtruth, d.frames), r.trajectory, config.evaluation);
   EXPECT_LT(e.ate_trans_m.rmse, 0.1);
 }
