@@ -9,8 +9,8 @@
 #include "app/commands.h"
 #include "app/config_dir.h"
 #include "app/sweep_args.h"
-#include "experiments/reproduction.h"
 #include "plots/render.h"
+#include "report/reproduction.h"
 
 namespace vigil::app {
 
@@ -64,7 +64,7 @@ void AddPaperCommand(CLI::App& root) {
       status = std::max(status, ablation.Run(noise, "paper (noise ablation)"));
       // reproduction.md again, now with the ablation beside the main sweep.
       const std::filesystem::path dir = args->run.output;
-      experiments::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
+      report::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
     }
     const auto figures = plots::RenderSweepFigures(args->run.output, plots::FigureOptions{});
     std::fprintf(stderr, "vigil paper: %zu figures -> %s\n", figures.size(),

@@ -8,8 +8,8 @@
 
 #include "app/commands.h"
 #include "core/error.h"
-#include "experiments/tables.h"
 #include "plots/render.h"
+#include "report/tables.h"
 
 namespace vigil::app {
 namespace {
@@ -48,7 +48,7 @@ void AddTablesCommand(CLI::App& root) {
           !std::filesystem::is_regular_file(std::filesystem::status(path, ec)))
         throw InputError(path.string() + ": exists and is not a regular file; move it away");
     }
-    const experiments::SweepAggregate agg = experiments::WriteSweepTables(args->dir);
+    const experiments::SweepAggregate agg = report::WriteSweepTables(args->dir);
     std::fprintf(stderr,
                  "vigil tables: %zu runs (%zu failed, %zu missing) -> %s/{results.csv, timing.csv, table2-4, "
                  "summary.md}\n",
