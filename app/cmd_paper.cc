@@ -9,8 +9,8 @@
 #include "app/commands.h"
 #include "app/config_dir.h"
 #include "app/sweep_args.h"
-#include "experiments/reproduction.h"
 #include "plots/render.h"
+#include "report/reproduction.h"
 
 namespace vigil::app {
 namespace {
@@ -30,7 +30,7 @@ int RunNoiseAblation(const SweepArgs& run, const experiments::SweepSpec& noise) 
   ablation.output = (std::filesystem::path(run.output) / "noise_ablation").string();
   const int status = ablation.Run(noise, "paper (noise ablation)");
   const std::filesystem::path dir = run.output;
-  experiments::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
+  report::WriteReproduction(dir, experiments::LoadSweepSpec((dir / "sweep.yaml").string()));
   return status;
 }
 

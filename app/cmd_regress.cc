@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "core/output.h"
 #include "experiments/regression.h"
-#include "experiments/tables.h"
+#include "experiments/sweep_aggregate.h"
 
 namespace vigil::app {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "app/commands.h"
 #include "core/error.h"
-#include "experiments/tables.h"
 #include "plots/render.h"
+#include "report/tables.h"
 
 namespace vigil::app {
 namespace {
@@ -64,7 +64,7 @@ void AddTablesCommand(CLI::App& root) {
   cmd->add_flag("--figures", args->figures, "also render figures/*.png, as vigil paper does");
   SetAction(cmd, [args] {
     RefuseNonFileOutputs(args->dir);
-    const experiments::SweepAggregate agg = experiments::WriteSweepTables(args->dir);
+    const experiments::SweepAggregate agg = report::WriteSweepTables(args->dir);
     std::fprintf(stderr,
                  "vigil tables: %zu runs (%zu failed, %zu missing) -> %s/{results.csv, timing.csv, table2-4, "
                  "summary.md}\n",

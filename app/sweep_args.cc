@@ -9,6 +9,7 @@
 #include "experiments/progress.h"
 #include "experiments/run.h"
 #include "experiments/sweep_runner.h"
+#include "report/tables.h"
 
 namespace vigil::app {
 
@@ -62,6 +63,7 @@ int SweepArgs::Run(const experiments::SweepSpec& spec, const char* command) cons
   options.resume = resume;
   options.force = force;
   options.shard = part;
+  options.write_tables = report::WriteTableFiles;
   options.progress = !quiet && ::isatty(STDERR_FILENO) ? stderr : nullptr;
   const experiments::SweepOutcome o = experiments::RunSweep(spec, output, options, experiments::ExecuteRun);
   if (quiet) return 0;

@@ -12,7 +12,6 @@
 #include "experiments/detection_stage.h"
 #include "experiments/external_estimator.h"
 #include "experiments/results_csv.h"
-#include "experiments/tables.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -165,7 +164,7 @@ SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRun
   csv->Commit();             // streamed in plan order above; the tables come from the same committed runs
   if (options.write_tables) {
     const SweepSpec written = LoadSweepSpec((dir / "sweep.yaml").string());
-    WriteTableFiles(dir, written, AggregateSweep(dir, written, distances));
+    options.write_tables(dir, written, AggregateSweep(dir, written, distances));
   }
   return outcome;
 }

@@ -1,5 +1,6 @@
 // A whole sweep: resolve the grid, build the DTW templates, run everything through the engine, stream
-// results.csv and timing.csv, and write the tables.
+// results.csv and timing.csv, and hand the aggregate to the table writer (the report library's
+// report::WriteTableFiles in `vigil sweep`; experiments/ never includes the report library).
 //
 // Nothing is written before the whole plan is valid: every cell's configuration, every run id, the
 // directory rules (core/output.h, PrepareSweepDirectory) and the DTW template builds are checked first, so a
@@ -29,6 +30,7 @@
 
 #include "detectors/template_library.h"
 #include "experiments/run.h"
+#include "experiments/sweep_aggregate.h"
 #include "experiments/sweep_engine.h"
 #include "experiments/sweep_shard.h"
 #include "experiments/sweep_spec.h"
@@ -39,12 +41,16 @@ namespace vigil::experiments {
 using RunExecutor =
     std::function<nlohmann::json(const RunConfig&, const RunOptions&, const std::filesystem::path&)>;
 
+// Writes the tables of a whole sweep in `dir` from its committed runs (`spec`: the sweep.yaml written there).
+using TableWriter =
+    std::function<void(const std::filesystem::path& dir, const SweepSpec& spec, const SweepAggregate& agg)>;
+
 struct SweepRunOptions {
   int threads = 0;      // 0: every core
   bool resume = false;  // continue the sweep in `dir` (its sweep.yaml must be the same)
   bool force = false;   // start over in a non-empty `dir`
   std::FILE* progress = nullptr;
-  bool write_tables = true;
+  TableWriter write_tables;  // empty: no tables (results.csv and timing.csv only)
   SweepShard shard;  // the whole sweep by default
 };
 

@@ -441,4 +441,8 @@ std::vector<SweepRunRef> EnumerateRuns(const SweepSpec& spec, const std::vector<
   return runs;
 }
 
+std::vector<double> SweepDistances(const SweepSpec& spec) {
+  return ResolveCellConfig(spec, EnumerateCells(spec).front()).evaluation.distances_m;
+}
+
 }  // namespace vigil::experiments

@@ -119,4 +119,7 @@ struct SweepRunRef {
 };
 std::vector<SweepRunRef> EnumerateRuns(const SweepSpec& spec, const std::vector<SweepCell>& cells);
 
+// The distances of the relative errors of a sweep (its first cell's evaluation.distances_m).
+std::vector<double> SweepDistances(const SweepSpec& spec);
+
 }  // namespace vigil::experiments

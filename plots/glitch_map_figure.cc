@@ -4,10 +4,8 @@
 #include <memory>
 
 #include "core/format.h"
-#include "gl/gl_context.h"
+#include "plots/figure_png.h"
 #include "plots/heatmap_panel.h"
-#include "plots/image.h"
-#include "plots/text.h"
 
 namespace vigil::plots {
 
@@ -41,10 +39,7 @@ Figure GlitchMapFigure(const experiments::GlitchMap& map, const std::string& tit
 
 void WriteGlitchMapFigure(const experiments::GlitchMap& map, const std::string& title,
                           const std::filesystem::path& path, const FigureOptions& options) {
-  ValidateFigureOptions(options);
-  gl::GlContext gl;
-  TextRenderer text(options.font_file);
-  WritePng(path, GlitchMapFigure(map, title).Render(&gl, &text, options.width, options.height));
+  WriteFigurePng(GlitchMapFigure(map, title), path, options);
 }
 
 }  // namespace vigil::plots

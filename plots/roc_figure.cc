@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "plots/figure_png.h"
 #include "plots/figures.h"
-#include "gl/gl_context.h"
-#include "plots/image.h"
-#include "plots/text.h"
 
 namespace vigil::plots {
 
@@ -38,10 +36,7 @@ Figure RocFigure(const std::vector<experiments::RocCurve>& curves, const std::st
 
 void WriteRocFigure(const std::vector<experiments::RocCurve>& curves, const std::string& title,
                     const std::filesystem::path& path, const FigureOptions& options) {
-  ValidateFigureOptions(options);
-  gl::GlContext gl;
-  TextRenderer text(options.font_file);
-  WritePng(path, RocFigure(curves, title).Render(&gl, &text, options.width, options.height));
+  WriteFigurePng(RocFigure(curves, title), path, options);
 }
 
 }  // namespace vigil::plots

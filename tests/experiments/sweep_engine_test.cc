@@ -19,7 +19,7 @@
 #include "core/staging.h"
 #include "experiments/progress.h"
 #include "experiments/sweep_runner.h"
-#include "experiments/tables.h"
+#include "report/tables.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
 #include "tests/experiments/sweep_test_util.h"
@@ -292,6 +292,7 @@ TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
   SweepRunOptions resume;
   resume.threads = 2;
   resume.resume = true;
+  resume.write_tables = report::WriteTableFiles;
   const SweepOutcome o = RunSweep(spec, out, resume, SlowFakeExecutor(0));
   EXPECT_EQ(o.resumed + o.executed, 30u);
   EXPECT_EQ(o.resumed, committed);
@@ -301,6 +302,7 @@ TEST(SweepRunner, ResumeAfterKillGivesTheSameResults) {
 
   SweepRunOptions straight;
   straight.threads = 1;
+  straight.write_tables = report::WriteTableFiles;
   RunSweep(spec, dir.path() / "straight", straight, SlowFakeExecutor(0));
   const std::string results = vigil::ReadFile(out / "results.csv");
   EXPECT_EQ(results, vigil::ReadFile(dir.path() / "straight" / "results.csv"));
@@ -335,7 +337,6 @@ TEST(SweepRunner, DtwTemplatesAreBuiltOnceFromADisjointSeedAndShared) {
   std::size_t original_with_templates = 0;
   SweepRunOptions options;
   options.threads = 2;
-  options.write_tables = false;
   RunSweep(spec, dir.path() / "out", options, [&](const RunConfig& c, const RunOptions& o, const fs::path&) {
     std::lock_guard<std::mutex> lock(mutex);
     if (c.detector.type == detectors::DetectorType::kDtw) {
@@ -388,10 +389,11 @@ TEST(SweepRunner, ConcurrentShardsGiveTheSameResultsAsOneSweep) {
   for (const auto& name : Listing(out))
     EXPECT_TRUE(name == "sweep.yaml" || name == "runs" || name.rfind("runs/", 0) == 0) << name;
   EXPECT_EQ(CommittedRuns(out / "runs"), 30u);
-  WriteSweepTables(out);
+  report::WriteSweepTables(out);
 
   SweepRunOptions straight;
   straight.threads = 2;
+  straight.write_tables = report::WriteTableFiles;
   const fs::path one = dir.path() / "one";
   RunSweep(LoadSweepSpec(sweep), one, straight, SlowFakeExecutor(0));
   for (const char* f : {"results.csv", "table2.md", "table3.csv", "table4.tex", "summary.md"})
@@ -433,7 +435,7 @@ TEST(SweepRunner, ShardsAreResumedAndCheckedAgainstTheDirectorysSweep) {
     other.shard = ParseShard(s);
     RunSweep(spec, out, other, SlowFakeExecutor(0));
   }
-  EXPECT_EQ(WriteSweepTables(out).missing, 0u);
+  EXPECT_EQ(report::WriteSweepTables(out).missing, 0u);
   RunSweep(spec, dir.path() / "one", {}, SlowFakeExecutor(0));
   EXPECT_EQ(vigil::ReadFile(out / "results.csv"), vigil::ReadFile(dir.path() / "one" / "results.csv"));
 }

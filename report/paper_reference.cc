@@ -1,8 +1,8 @@
-#include "experiments/paper_reference.h"
+#include "report/paper_reference.h"
 
 #include <utility>
 
-namespace vigil::experiments {
+namespace vigil::report {
 namespace {
 const std::vector<std::string> kDistanceRows = {"7 m", "14 m", "21 m", "28 m", "35 m"};
 const std::vector<std::string> kMethods = {"trunc", "dtw", "original"};
@@ -44,4 +44,4 @@ ResultTable PaperTable4() {
                                                                                   {0.55, 0.10, 14.71}});
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::report

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace vigil::experiments {
+namespace vigil::report {
 
 struct ResultTable {
   std::string title;   // caption (LaTeX) / heading (Markdown)
@@ -26,4 +26,7 @@ std::string TableLatex(const ResultTable& table);     // table environment with 
 // (label not in `reference`) shows ours only.
 std::string SideBySideMarkdown(const ResultTable& ours, const ResultTable& reference);
 
-}  // namespace vigil::experiments
+// The value at (row, column) by their labels; NaN when either label is absent.
+double TableValue(const ResultTable& table, const std::string& row, const std::string& column);
+
+}  // namespace vigil::report

@@ -1,9 +1,11 @@
-#include "experiments/result_table.h"
+#include "report/result_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
-namespace vigil::experiments {
+namespace vigil::report {
 std::string FormatCell(double value, int decimals) {
   if (!std::isfinite(value)) return "n/a";
   char buf[64];
@@ -100,4 +102,11 @@ std::string SideBySideMarkdown(const ResultTable& ours, const ResultTable& ref) 
   return s;
 }
 
-}  // namespace vigil::experiments
+double TableValue(const ResultTable& table, const std::string& row, const std::string& column) {
+  const auto r = std::find(table.rows.begin(), table.rows.end(), row);
+  const auto c = std::find(table.columns.begin(), table.columns.end(), column);
+  if (r == table.rows.end() || c == table.columns.end()) return std::numeric_limits<double>::quiet_NaN();
+  return table.values[r - table.rows.begin()][c - table.columns.begin()];
+}
+
+}  // namespace vigil::report

@@ -2,7 +2,7 @@
 // results of a sweep: each claim is "A has a lower error than B", tested over seeds with ComparePaired
 // (paired_test.h). Kept apart from the sweep files so that it can be tested on synthetic results.
 //
-// Claims (the paper's numbers, tables 2-4, in each claim's `paper` text):
+// Claims (the paper's numbers, tables 2-4 of paper_reference.h, in each claim's `paper` text):
 //   a1 original works at N(0,1): its mean ATE is below 0.1 m (paper 0.06 m);
 //   a2, a3 original degrades as the glitches grow: noise_0_1 < noise_1_10 < noise_50_10;
 //   b1, b2 both methods improve on original at large glitches (noise_50_10);
@@ -17,7 +17,7 @@
 
 #include "evaluation/paired_test.h"
 
-namespace vigil::experiments {
+namespace vigil::report {
 
 // Per-seed results of a sweep, by the names of its groups (table 2 columns) and methods.
 struct SeedResults {
@@ -61,4 +61,4 @@ ClaimSpec RenameMethods(ClaimSpec claim, const std::map<std::string, std::string
 // "original @ noise_50_10", "dtw (pooled)" or "0.1".
 std::string SideLabel(const ClaimSpec& claim, bool a);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::report

@@ -1,4 +1,4 @@
-#include "experiments/tables.h"
+#include "report/tables.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,11 +8,11 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "evaluation/statistics.h"
-#include "experiments/paper_reference.h"
-#include "experiments/reproduction.h"
 #include "experiments/results_csv.h"
+#include "report/paper_reference.h"
+#include "report/reproduction.h"
 
-namespace vigil::experiments {
+namespace vigil::report {
 namespace fs = std::filesystem;
 namespace {
 
@@ -24,7 +24,8 @@ std::vector<std::string> DistanceRows(const std::vector<double>& distances_m) {
   return rows;
 }
 
-ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::string>& methods, bool yaw) {
+ResultTable RelativeTable(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods,
+                          bool yaw) {
   ResultTable t;
   t.title =
       yaw ? "Table 4: overall relative yaw error [deg]" : "Table 3: overall relative translation error [m]";
@@ -36,7 +37,7 @@ ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::stri
   for (std::size_t m = 0; m < methods.size(); ++m) {
     const int mi = agg.MethodIndex(methods[m]);
     if (mi < 0) continue;
-    const CellResult pooled = agg.Pooled(static_cast<std::size_t>(mi));
+    const experiments::CellResult pooled = agg.Pooled(static_cast<std::size_t>(mi));
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d)
       t.values[d][m] = yaw ? pooled.PooledReYaw(d) : pooled.PooledReTrans(d);
   }
@@ -45,7 +46,7 @@ ResultTable RelativeTable(const SweepAggregate& agg, const std::vector<std::stri
 
 }  // namespace
 
-ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+ResultTable MakeTable2(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods) {
   ResultTable t;
   t.title = "Table 2: RMSE of translation [m] (absolute trajectory error), mean over seeds";
   t.corner = "method";
@@ -63,14 +64,14 @@ ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>
   return t;
 }
 
-ResultTable MakeTable3(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+ResultTable MakeTable3(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods) {
   return RelativeTable(agg, methods, false);
 }
-ResultTable MakeTable4(const SweepAggregate& agg, const std::vector<std::string>& methods) {
+ResultTable MakeTable4(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods) {
   return RelativeTable(agg, methods, true);
 }
 
-std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
+std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiments::SweepAggregate& agg) {
   std::size_t failed = 0, diverged = 0;
   for (const auto& c : agg.cells) {
     failed += c.failed;
@@ -94,9 +95,10 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   s += "Methods (the sweep file's detector settings; the paper's are trunc = threshold, dtw = dtw with "
        "normalization none, original = none; the others are vigil's variants and extra baselines, "
        "detectors/detector_options.h gives each rule):\n\n";
-  for (const SweepSetting& m : spec.methods) {
+  for (const experiments::SweepSetting& m : spec.methods) {
     s += "- `" + m.label + "`:";
-    for (const SweepOverride& o : m.overrides) s += " `" + o.key + "=" + YAML::Dump(o.value) + "`";
+    for (const experiments::SweepOverride& o : m.overrides)
+      s += " `" + o.key + "=" + YAML::Dump(o.value) + "`";
     s += "\n";
   }
   s += "\n";
@@ -113,7 +115,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t g = 0; g < agg.groups.size(); ++g) {
     for (std::size_t m = 0; m < agg.methods.size(); ++m) {
-      const CellResult& c = agg.Cell(g, m);
+      const experiments::CellResult& c = agg.Cell(g, m);
       const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
            std::to_string(c.ok()) + " | " + std::to_string(c.diverged) + " | " + std::to_string(c.failed) +
@@ -127,7 +129,7 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   s += "| method | distance | segments | pooled mean | std of run means | median of run means |\n"
        "|---|---:|---:|---:|---:|---:|\n";
   for (std::size_t m = 0; m < agg.methods.size(); ++m) {
-    const CellResult pooled = agg.Pooled(m);
+    const experiments::CellResult pooled = agg.Pooled(m);
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
       const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(pooled.re_trans_run_means[d]);
       s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
@@ -151,17 +153,14 @@ std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg) {
   return s;
 }
 
-std::vector<double> SweepDistances(const SweepSpec& spec) {
-  return ResolveCellConfig(spec, EnumerateCells(spec).front()).evaluation.distances_m;
-}
-
-SweepAggregate WriteSweepTables(const fs::path& dir) {
-  const SweepSpec spec = LoadSweepSpec((dir / "sweep.yaml").string());
-  const std::vector<double> distances = SweepDistances(spec);
+experiments::SweepAggregate WriteSweepTables(const fs::path& dir) {
+  const experiments::SweepSpec spec = experiments::LoadSweepSpec((dir / "sweep.yaml").string());
+  const std::vector<double> distances = experiments::SweepDistances(spec);
   RemoveStaleStaging(dir);  // a killed sweep's results.csv.tmp-... (this host's dead processes only)
-  ResultsCsvWriter csv(dir, spec, distances);
-  const SweepAggregate agg = AggregateSweep(
-      dir, spec, distances, [&](const SweepRunRef& run, const SweepCell& cell, const nlohmann::json* m) {
+  experiments::ResultsCsvWriter csv(dir, spec, distances);
+  const experiments::SweepAggregate agg = experiments::AggregateSweep(
+      dir, spec, distances,
+      [&](const experiments::SweepRunRef& run, const experiments::SweepCell& cell, const nlohmann::json* m) {
         if (m) csv.Add(run, cell, *m);
       });
   csv.Commit();
@@ -169,7 +168,8 @@ SweepAggregate WriteSweepTables(const fs::path& dir) {
   return agg;
 }
 
-void WriteTableFiles(const fs::path& dir, const SweepSpec& spec, const SweepAggregate& agg) {
+void WriteTableFiles(const fs::path& dir, const experiments::SweepSpec& spec,
+                     const experiments::SweepAggregate& agg) {
   const ResultTable tables[] = {MakeTable2(agg, spec.table_methods), MakeTable3(agg, spec.table_methods),
                                 MakeTable4(agg, spec.table_methods)};
   const char* names[] = {"table2", "table3", "table4"};
@@ -182,4 +182,4 @@ void WriteTableFiles(const fs::path& dir, const SweepSpec& spec, const SweepAggr
   WriteReproduction(dir, spec);
 }
 
-}  // namespace vigil::experiments
+}  // namespace vigil::report

@@ -1,4 +1,4 @@
-#include "experiments/tables.h"
+#include "report/tables.h"
 
 #include <gtest/gtest.h>
 
@@ -8,27 +8,29 @@
 #include "tests/core/test_util.h"
 #include "tests/experiments/sweep_test_util.h"
 
-namespace vigil::experiments {
+namespace vigil::report {
 namespace {
 namespace fs = std::filesystem;
-using testing::FakeMetrics;
-using testing::WriteSmallSweep;
+using experiments::testing::FakeMetrics;
+using experiments::testing::WriteSmallSweep;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
 
 // Runs the small sweep with fake results; the run of `failing_id` throws.
-SweepSpec RunFakeSweep(const TempDir& dir, const std::string& failing_id = "") {
-  const SweepSpec spec = LoadSweepSpec(WriteSmallSweep(
+experiments::SweepSpec RunFakeSweep(const TempDir& dir, const std::string& failing_id = "") {
+  const experiments::SweepSpec spec = experiments::LoadSweepSpec(WriteSmallSweep(
       dir,
       "  trunc: threshold\n  dtw: {type: dtw, dtw: {templates_file: none.yaml}}\n  original: none\n"
       "  hampel: hampel\ntable_methods: [trunc, dtw, original]\n"));
-  SweepRunOptions options;
+  experiments::SweepRunOptions options;
   options.threads = 2;
-  RunSweep(spec, dir.path() / "out", options, [&](const RunConfig& c, const RunOptions&, const fs::path& d) {
-    if (!failing_id.empty() && d.filename().string().rfind(failing_id, 0) == 0)
-      throw std::runtime_error("diverged: newest position jumped 7 m");
-    return FakeMetrics(c);
-  });
+  experiments::RunSweep(
+      spec, dir.path() / "out", options,
+      [&](const experiments::RunConfig& c, const experiments::RunOptions&, const fs::path& d) {
+        if (!failing_id.empty() && d.filename().string().rfind(failing_id, 0) == 0)
+          throw std::runtime_error("diverged: newest position jumped 7 m");
+        return FakeMetrics(c);
+      });
   return spec;
 }
 
@@ -40,15 +42,16 @@ double Mean(const std::vector<double>& v) {
 
 TEST(Tables, Table2IsTheMeanAteOverSeedsWithThePapersLayout) {
   TempDir dir;
-  const SweepSpec spec = RunFakeSweep(dir);
-  const SweepAggregate agg = WriteSweepTables(dir.path() / "out");
+  const experiments::SweepSpec spec = RunFakeSweep(dir);
+  const experiments::SweepAggregate agg = WriteSweepTables(dir.path() / "out");
   const ResultTable t2 = MakeTable2(agg, spec.table_methods);
   EXPECT_EQ(t2.rows, (std::vector<std::string>{"trunc", "dtw", "original"}));
   EXPECT_EQ(t2.columns, (std::vector<std::string>{"noise_0_1", "noise_50_10"}));
   // Expected: the fake metrics of the three seeds of (noise_50_10, original), by hand.
   std::vector<double> ates;
   for (uint64_t seed : {1, 2, 3}) {
-    RunConfig c = ResolveCellConfig(spec, EnumerateCells(spec)[6]);  // noise_50_10 x original
+    experiments::RunConfig c =
+        experiments::ResolveCellConfig(spec, experiments::EnumerateCells(spec)[6]);  // noise_50_10 x original
     ASSERT_EQ(c.detector.type, detectors::DetectorType::kNone);
     c.seed = seed;
     ates.push_back(FakeMetrics(c)["ate"]["trans_m"]["rmse"].get<double>());
@@ -68,14 +71,14 @@ TEST(Tables, Table2IsTheMeanAteOverSeedsWithThePapersLayout) {
 
 TEST(Tables, RelativeErrorsArePooledOverSegments) {
   TempDir dir;
-  const SweepSpec spec = RunFakeSweep(dir);
-  const SweepAggregate agg = WriteSweepTables(dir.path() / "out");
+  const experiments::SweepSpec spec = RunFakeSweep(dir);
+  const experiments::SweepAggregate agg = WriteSweepTables(dir.path() / "out");
   // Pool by hand: trunc over both glitch settings and the three seeds, at 14 m.
   double weighted = 0, n = 0;
-  const auto cells = EnumerateCells(spec);
+  const auto cells = experiments::EnumerateCells(spec);
   for (std::size_t c : {0u, 4u})
     for (uint64_t seed : {1, 2, 3}) {
-      RunConfig config = ResolveCellConfig(spec, cells[c]);
+      experiments::RunConfig config = experiments::ResolveCellConfig(spec, cells[c]);
       config.seed = seed;
       const auto m = FakeMetrics(config);
       weighted +=
@@ -90,8 +93,8 @@ TEST(Tables, RelativeErrorsArePooledOverSegments) {
 TEST(Tables, SummaryCountsFailuresAndShowsExtraMethodsAndThePaper) {
   TempDir dir;
   RunFakeSweep(dir, "noise_50_10-original-s002");
-  const SweepAggregate agg = WriteSweepTables(dir.path() / "out");
-  const CellResult& cell = agg.Cell(1, 2);
+  const experiments::SweepAggregate agg = WriteSweepTables(dir.path() / "out");
+  const experiments::CellResult& cell = agg.Cell(1, 2);
   EXPECT_EQ(cell.failed, 1u);
   EXPECT_EQ(cell.ok(), 2u);
   const std::string summary = ReadFile(dir.path() / "out" / "summary.md");
@@ -112,16 +115,16 @@ TEST(Tables, SummaryCountsFailuresAndShowsExtraMethodsAndThePaper) {
 TEST(Regression, IdenticalSweepPassesAndAWorseCellFails) {
   TempDir dir;
   RunFakeSweep(dir);
-  const SweepAggregate agg = WriteSweepTables(dir.path() / "out");
-  const auto cells = RegressionCells(agg);
-  RegressionTolerance tol;
-  const std::string path = dir.File("baseline.json", BaselineJson(cells, tol, "s.yaml").dump(2));
-  std::vector<RegressionCell> baseline;
-  RegressionTolerance read_tol;
-  ReadBaseline(path, &baseline, &read_tol);
+  const experiments::SweepAggregate agg = WriteSweepTables(dir.path() / "out");
+  const auto cells = experiments::RegressionCells(agg);
+  experiments::RegressionTolerance tol;
+  const std::string path = dir.File("baseline.json", experiments::BaselineJson(cells, tol, "s.yaml").dump(2));
+  std::vector<experiments::RegressionCell> baseline;
+  experiments::RegressionTolerance read_tol;
+  experiments::ReadBaseline(path, &baseline, &read_tol);
   ASSERT_EQ(baseline.size(), cells.size());
   EXPECT_EQ(read_tol.relative, tol.relative);
-  EXPECT_EQ(CompareWithBaseline(cells, baseline, read_tol).regressions, 0u);
+  EXPECT_EQ(experiments::CompareWithBaseline(cells, baseline, read_tol).regressions, 0u);
 
   auto worse = cells;
   worse[3].value = worse[3].value * 1.3 + 0.05;  // beyond 25 % + 0.02
@@ -131,29 +134,31 @@ TEST(Regression, IdenticalSweepPassesAndAWorseCellFails) {
   failing[0].failed += 1;
   auto better = cells;
   better[0].value = 0.0;
-  const RegressionReport r = CompareWithBaseline(worse, baseline, read_tol);
+  const experiments::RegressionReport r = experiments::CompareWithBaseline(worse, baseline, read_tol);
   EXPECT_EQ(r.regressions, 1u);
   EXPECT_NE(r.text.find("REGRESSED  ate_rmse_m   " + cells[3].cell), std::string::npos) << r.text;
-  EXPECT_EQ(CompareWithBaseline(slightly, baseline, read_tol).regressions, 0u);
-  EXPECT_EQ(CompareWithBaseline(failing, baseline, read_tol).regressions, 1u);
-  const RegressionReport b = CompareWithBaseline(better, baseline, read_tol);
+  EXPECT_EQ(experiments::CompareWithBaseline(slightly, baseline, read_tol).regressions, 0u);
+  EXPECT_EQ(experiments::CompareWithBaseline(failing, baseline, read_tol).regressions, 1u);
+  const experiments::RegressionReport b = experiments::CompareWithBaseline(better, baseline, read_tol);
   EXPECT_EQ(b.regressions, 0u);
   EXPECT_EQ(b.improvements, 1u);
-  std::vector<RegressionCell> fewer(cells.begin() + 1, cells.end());
-  EXPECT_EQ(CompareWithBaseline(fewer, baseline, read_tol).regressions, 1u);  // a cell went missing
+  std::vector<experiments::RegressionCell> fewer(cells.begin() + 1, cells.end());
+  EXPECT_EQ(experiments::CompareWithBaseline(fewer, baseline, read_tol).regressions,
+            1u);  // a cell went missing
 }
 
 TEST(Regression, MalformedBaselineIsAnInputError) {
   TempDir dir;
-  EXPECT_EQ(
-      InputErrorOf([&] { ReadBaseline(dir.File("b.json", "{\"format\": \"other\"}"), nullptr, nullptr); }),
-      (dir.path() / "b.json").string() + ":1: format: expected \"vigil-regress-baseline-1\"");
+  EXPECT_EQ(InputErrorOf([&] {
+              experiments::ReadBaseline(dir.File("b.json", "{\"format\": \"other\"}"), nullptr, nullptr);
+            }),
+            (dir.path() / "b.json").string() + ":1: format: expected \"vigil-regress-baseline-1\"");
   const std::string p = dir.File("c.json", "{\"format\": \"vigil-regress-baseline-1\", \"cells\": []}");
-  std::vector<RegressionCell> cells;
-  RegressionTolerance tol;
-  EXPECT_NE(InputErrorOf([&] { ReadBaseline(p, &cells, &tol); }).find("c.json:1: tolerance: "),
+  std::vector<experiments::RegressionCell> cells;
+  experiments::RegressionTolerance tol;
+  EXPECT_NE(InputErrorOf([&] { experiments::ReadBaseline(p, &cells, &tol); }).find("c.json:1: tolerance: "),
             std::string::npos);
 }
 
 }  // namespace
-}  // namespace vigil::experiments
+}  // namespace vigil::report

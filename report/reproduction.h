@@ -15,13 +15,13 @@
 #include <map>
 #include <string>
 
-#include "experiments/claims.h"
 #include "experiments/sweep_spec.h"
+#include "report/claims.h"
 
-namespace vigil::experiments {
+namespace vigil::report {
 
 // The per-seed results of the sweep in `dir` (spec = its sweep.yaml).
-SeedResults ReadSeedResults(const std::filesystem::path& dir, const SweepSpec& spec);
+SeedResults ReadSeedResults(const std::filesystem::path& dir, const experiments::SweepSpec& spec);
 
 // Splits results whose groups are "<setting>-<label>" by label (the noise ablation): label -> results with
 // the groups renamed to "<setting>".
@@ -35,6 +35,6 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
                                  const std::map<std::string, SeedResults>& noise_models);
 
 // Writes DIR/reproduction.md atomically when the sweep in `dir` has the paper's grid; returns whether it did.
-bool WriteReproduction(const std::filesystem::path& dir, const SweepSpec& spec);
+bool WriteReproduction(const std::filesystem::path& dir, const experiments::SweepSpec& spec);
 
-}  // namespace vigil::experiments
+}  // namespace vigil::report

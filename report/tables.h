@@ -8,29 +8,27 @@
 
 #include <filesystem>
 
-#include "experiments/result_table.h"
 #include "experiments/sweep_aggregate.h"
 #include "experiments/sweep_spec.h"
+#include "report/result_table.h"
 
-namespace vigil::experiments {
+namespace vigil::report {
 
-ResultTable MakeTable2(const SweepAggregate& agg, const std::vector<std::string>& methods);
-ResultTable MakeTable3(const SweepAggregate& agg, const std::vector<std::string>& methods);
-ResultTable MakeTable4(const SweepAggregate& agg, const std::vector<std::string>& methods);
+ResultTable MakeTable2(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods);
+ResultTable MakeTable3(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods);
+ResultTable MakeTable4(const experiments::SweepAggregate& agg, const std::vector<std::string>& methods);
 
 // summary.md: run counts, the tables beside the paper's, per-cell std / median / min / max / failures,
 // detection precision and recall, every method (extra ones included), failure reasons.
-std::string SummaryMarkdown(const SweepSpec& spec, const SweepAggregate& agg);
+std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiments::SweepAggregate& agg);
 
 // `vigil tables DIR`: reads DIR/sweep.yaml and runs/*/metrics.json; (re)writes results.csv, table2-4 and
 // summary.md (each atomically). Returns the aggregate.
-SweepAggregate WriteSweepTables(const std::filesystem::path& dir);
+experiments::SweepAggregate WriteSweepTables(const std::filesystem::path& dir);
 
 // table2-4 (.md, .csv, .tex), summary.md and, for the paper's grid, reproduction.md (reproduction.h) of an
 // aggregate, each atomically (results.csv untouched).
-void WriteTableFiles(const std::filesystem::path& dir, const SweepSpec& spec, const SweepAggregate& agg);
+void WriteTableFiles(const std::filesystem::path& dir, const experiments::SweepSpec& spec,
+                     const experiments::SweepAggregate& agg);
 
-// The distances of the relative errors of a sweep (its first cell's evaluation.distances_m).
-std::vector<double> SweepDistances(const SweepSpec& spec);
-
-}  // namespace vigil::experiments
+}  // namespace vigil::report
