@@ -168,7 +168,6 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   if (options_.pose_covariance) {
     const auto covariance_start = std::chrono::steady_clock::now();
     newest_pose_covariance_ = NewestPoseCovariance();
-    if (newest_pose_covariance_) window_.back()->P_pose = *newest_pose_covariance_;
     timing_.covariance_s += SecondsSince(covariance_start);
   }
   if (full) {
@@ -255,6 +254,7 @@ void Estimator::Reset() {
   features_.Clear();
   reprojection_factors_.Clear();
   prior_.reset();
+  anchored_prior_.reset();
   bias_prior_.reset();
   initialized_ = false;
   lost_frames_ = 0;

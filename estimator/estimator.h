@@ -91,8 +91,6 @@ class Estimator {
     double speed_bias[kSpeedBiasSize] = {};
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
-    // The pose covariance estimated when this frame was the newest (zero before: the initial window).
-    Matrix6d P_pose = Matrix6d::Zero();
 
     NavState State() const;
     void SetState(const NavState& s);
@@ -131,6 +129,9 @@ class Estimator {
   // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
   // fails.
   void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
+  // The same for anchored_prior_, which starts as the gauge on the oldest frame when it is null.
+  void KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
+                         const std::set<const double*>& dropped);
   void Reset();
   // The newest pose's covariance from the window's information (estimator_covariance.cc).
   std::optional<Matrix6d> NewestPoseCovariance();
@@ -158,6 +159,11 @@ class Estimator {
   std::deque<std::unique_ptr<Frame>> window_;
   FeatureManager features_;
   std::shared_ptr<LinearPrior> prior_;
+  // prior_ with the gauge of the run (pose_covariance.h): the first marginalization starts from the
+  // information that holds the oldest frame's position and yaw, and every later one carries it on. Only the
+  // pose covariance uses it; null before the first marginalization, after a reset, or when pose_covariance
+  // is off.
+  std::shared_ptr<LinearPrior> anchored_prior_;
   // The initial bias prior (options_.prior) on the oldest frame's speed-bias block, from initialization until
   // that frame is marginalized (its information then moves into prior_). Only MarginalizeOldest and Reset
   // remove the oldest frame, and both drop this prior, so while it exists it belongs to window_.front().

@@ -20,6 +20,17 @@ void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
   }
 }
 
+void Estimator::KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
+                                  const std::set<const double*>& dropped) {
+  const LinearPrior gauge = GaugePrior(window_.front()->pose);
+  const LinearPrior* previous = anchored_prior_ ? anchored_prior_.get() : &gauge;
+  auto anchored = std::make_shared<LinearPrior>();
+  if (Marginalize(previous, terms, dropped, options_.window.marginalization_eigen_threshold, anchored.get()))
+    anchored_prior_ = std::move(anchored);
+  else
+    anchored_prior_.reset();
+}
+
 void Estimator::MarginalizeOldest(bool with_prior) {
   Frame& oldest = *window_.front();
   if (with_prior && window_.size() >= 2) {
@@ -43,6 +54,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     for (const ReprojectionTerm& term : reprojections)
       terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
     KeepPrior(terms, dropped);
+    if (options_.pose_covariance) KeepAnchoredPrior(terms, dropped);
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   features_.RemoveFrame(oldest.id, CameraPoses());
@@ -58,6 +70,9 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
       (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
     KeepPrior({}, {second_newest.pose, second_newest.speed_bias});
   }
+  if (with_prior && anchored_prior_ &&
+      (anchored_prior_->Involves(second_newest.pose) || anchored_prior_->Involves(second_newest.speed_bias)))
+    KeepAnchoredPrior({}, {second_newest.pose, second_newest.speed_bias});
   // The newest frame's IMU now starts at the frame before the dropped one.
   if (second_newest.imu_from_prev) {
     Preintegration merged = *second_newest.imu_from_prev;

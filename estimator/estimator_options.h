@@ -256,8 +256,8 @@ struct EstimatorOptions {
               "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
     v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
     v.Field("pose_covariance", pose_covariance,
-            "compute each output pose's covariance (the marginal of the newest frame of the window, with the "
-            "gauge chained from the oldest frame) for the NEES");
+            "compute each output pose's covariance (the marginal of the newest frame of the window, relative "
+            "to the position and yaw of the run's first frame) for the NEES");
   }
 };
 

@@ -157,7 +157,9 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
                                         ? EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
                                         : TrajectoryEvaluation{};
   if (data.with_groundtruth)
-    evaluation.nees = ComputeNees(groundtruth, result.trajectory, result.pose_covariances, evaluation.alignment);
+    evaluation.nees =
+        ComputeNees(groundtruth, result.trajectory, result.pose_covariances,
+                    GaugeAlignment(groundtruth, result.trajectory, result.pose_covariances));
   summary.wall.evaluate_s = SecondsSince(t);
 
   RunConfig resolved = config;  // ToYaml visits (non-const)
