@@ -5,6 +5,7 @@
 
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
+#include "estimator/zero_velocity_factor.h"
 
 namespace vigil::estimator {
 
@@ -18,6 +19,21 @@ void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
     prior_.reset();
     ++marginalization_failures_;
   }
+}
+
+void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                                              std::vector<MarginalizationTerm>* terms) {
+  if (!ZeroVelocityActive() || window_.size() < 2 || !window_[1]->stationary) return;
+  const ZeroVelocityOptions& o = options_.zero_velocity;
+  Frame& oldest = *window_[0];
+  Frame& second = *window_[1];
+  auto velocity = std::make_unique<ZeroVelocityFactor>(o.velocity_std_mps);
+  terms->push_back({velocity.get(), nullptr, {oldest.speed_bias}});
+  costs->push_back(std::move(velocity));
+  auto motion =
+      std::make_unique<NoMotionFactor>(o.velocity_std_mps * second.imu_from_prev->sum_dt_s(), o.rotation_std_rad);
+  terms->push_back({motion.get(), nullptr, {oldest.pose, second.pose}});
+  costs->push_back(std::move(motion));
 }
 
 void Estimator::MarginalizeOldest(bool with_prior) {
@@ -34,6 +50,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
           {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
       costs.push_back(std::move(factor));
     }
+    AppendOldestZeroVelocityTerms(&costs, &terms);
     std::vector<ReprojectionTerm> reprojections;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
@@ -58,6 +75,8 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
       (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
     KeepPrior({}, {second_newest.pose, second_newest.speed_bias});
   }
+  // The newest frame's interval now starts at the frame before the dropped one: still when both were.
+  newest.stationary = newest.stationary && second_newest.stationary;
   // The newest frame's IMU now starts at the frame before the dropped one.
   if (second_newest.imu_from_prev) {
     Preintegration merged = *second_newest.imu_from_prev;
