@@ -30,8 +30,7 @@ void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres:
   auto velocity = std::make_unique<ZeroVelocityFactor>(o.velocity_std_mps);
   terms->push_back({velocity.get(), nullptr, {oldest.speed_bias}});
   costs->push_back(std::move(velocity));
-  auto motion =
-      std::make_unique<NoMotionFactor>(o.velocity_std_mps * second.imu_from_prev->sum_dt_s(), o.rotation_std_rad);
+  auto motion = std::make_unique<NoMotionFactor>(o.position_std_m, o.rotation_std_rad);
   terms->push_back({motion.get(), nullptr, {oldest.pose, second.pose}});
   costs->push_back(std::move(motion));
 }

@@ -217,8 +217,7 @@ void Estimator::AddZeroVelocityFactors(WindowProblem* w) {
   for (std::size_t k = 1; k < window_.size(); ++k) {
     if (!window_[k]->stationary) continue;
     still[k - 1] = still[k] = true;
-    const double dt_s = window_[k]->imu_from_prev->sum_dt_s();
-    auto factor = std::make_unique<NoMotionFactor>(o.velocity_std_mps * dt_s, o.rotation_std_rad);
+    auto factor = std::make_unique<NoMotionFactor>(o.position_std_m, o.rotation_std_rad);
     w->problem.AddResidualBlock(factor.get(), nullptr, window_[k - 1]->pose, window_[k]->pose);
     w->costs.push_back(std::move(factor));
   }

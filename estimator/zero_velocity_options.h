@@ -27,6 +27,7 @@ struct ZeroVelocityOptions {
   int min_features = 10;      // image test: fewest features seen in both frames
   double imu_noise_multiplier = 0.0;  // imu test: white-noise std scale (0: imu test off)
   double velocity_std_mps = 0.01;     // the update: std of each velocity about zero [m/s]
+  double position_std_m = 1e-3;       // the update: std of the position change between the two frames [m]
   double rotation_std_rad = 1e-3;     // the update: std of the rotation between the two frames [rad]
 
   template <class V>
@@ -52,8 +53,10 @@ struct ZeroVelocityOptions {
             "the noise model (0: imu test off)",
             Bounds::NonNegative());
     v.Field("velocity_std_mps", velocity_std_mps,
-            "zero-velocity factor: std of each frame's velocity about zero [m/s]; the position change "
-            "between the frames gets this std times the interval",
+            "zero-velocity factor: std of each frame's velocity about zero [m/s]", Bounds::Positive());
+    v.Field("position_std_m", position_std_m,
+            "zero-velocity factor: std of the position change between the two frames of a stationary "
+            "interval, whatever its length (a still platform does not wander) [m]",
             Bounds::Positive());
     v.Field("rotation_std_rad", rotation_std_rad,
             "zero-velocity factor: std of the rotation between the two frames of a stationary interval "
