@@ -77,6 +77,10 @@ class Estimator {
   int marginalization_failures() const { return marginalization_failures_; }
   const EstimatorTiming& timing() const { return timing_; }
   const GatingStats& gating() const { return gating_; }
+  // Frame intervals the zero-velocity detector found stationary (counted when it runs).
+  int stationary_intervals() const { return stationary_intervals_; }
+  // Whether the estimator holds a static start still (no motion seen since).
+  bool holding_still() const { return holding_still_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
   // The initializer's last failure reason (empty when it never ran or never failed).
   const std::string& init_failure_reason() const { return init_failure_reason_; }
@@ -91,6 +95,9 @@ class Estimator {
     double speed_bias[kSpeedBiasSize] = {};
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
+    // The interval from the previous window frame stands still (zero_velocity_detector.h); computed only
+    // when options.zero_velocity asks for it.
+    bool stationary = false;
 
     NavState State() const;
     void SetState(const NavState& s);
@@ -111,6 +118,13 @@ class Estimator {
   void AddStateBlocks(const Elimination& elimination, WindowProblem* w);
   void AddPriors(WindowProblem* w);
   void AddImuFactors(WindowProblem* w);
+  // Zero-velocity factors on the stationary intervals (zero_velocity_factor.h), when the update is on or a
+  // static start is held.
+  void AddZeroVelocityFactors(WindowProblem* w);
+  bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
+  // The zero-velocity terms that involve the oldest frame (for its marginalization); `costs` owns them.
+  void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                                     std::vector<MarginalizationTerm>* terms);
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
   ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
@@ -174,6 +188,9 @@ class Estimator {
   PoseManifold pose_manifold_;
 
   bool initialized_ = false;
+  // A static start holds the window still (no triangulation) until the first interval that moves.
+  bool holding_still_ = false;
+  int stationary_intervals_ = 0;
   uint64_t next_frame_id_ = 0;
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;

@@ -8,6 +8,7 @@
 #include "estimator/imu_noise_model.h"
 #include "estimator/init/vins_init_options.h"
 #include "estimator/mitigation_options.h"
+#include "estimator/zero_velocity_options.h"
 
 namespace vigil::estimator {
 
@@ -236,6 +237,7 @@ struct EstimatorOptions {
   FailureOptions failure;
   ImuNoiseModelOptions imu_noise;
   MitigationOptions mitigation;
+  ZeroVelocityOptions zero_velocity;
   bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
 
   template <class V>
@@ -255,6 +257,8 @@ struct EstimatorOptions {
     v.Section("imu_noise", imu_noise,
               "IMU noise model of the IMU factors (matched = the sensor's own densities, or set / mis-set)");
     v.Section("mitigation", mitigation, "in-estimator mitigation of bad IMU samples and factors");
+    v.Section("zero_velocity", zero_velocity,
+              "zero-velocity detection, update and static initialization (docs/estimator.md)");
     v.Field("pose_covariance", pose_covariance,
             "compute each output pose's covariance (the marginal of the newest frame of the window, relative "
             "to the position and yaw of the run's first frame) for the NEES");
