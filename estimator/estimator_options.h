@@ -38,7 +38,8 @@ struct GroundTruthInitOptions {
 // 20-30 Hz camera and a slow flight that makes every second frame a keyframe (EuRoC V1_01: 1,402 of 2,895
 // frames), so the window spans about a second and its yaw and scale drift with the IMU's errors. vigil keeps
 // 15 keyframes and makes one at 20 px, which spans about three times as long (docs/estimator.md, "Accuracy
-// ablations": ATE -45 % on the real IMU, -45 % on the IMU simulated along V1_01, -6 % on the paper scenario).
+// ablations": ATE -45 to -50 % on the real IMU, -50 % on the IMU simulated along V1_01, -6 % on the paper
+// scenario, -28 % on the rescue course).
 struct WindowOptions {
   int size = 15;                  // keyframes kept besides the newest frame
   double min_parallax_px = 20.0;  // keyframe when the mean parallax to the previous frame reaches this
