@@ -8,6 +8,7 @@
 
 #include "core/format.h"
 #include "estimator/imu_interval.h"
+#include "estimator/zero_velocity_detector.h"
 
 namespace vigil::estimator {
 namespace {
@@ -116,7 +117,13 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     frame->imu_from_prev = PreintegrateInterval(imu, window_.back()->t_ns, t_ns, prev.b_a, prev.b_g, noise_,
                                                 imu_rate_hz_, imu_variance_scale);
     if (initialized_) Predict(frame.get());
+    if (options_.zero_velocity.update || options_.zero_velocity.static_init) {
+      frame->stationary = IntervalIsStationary(window_.back()->features_n, features_n, *frame->imu_from_prev,
+                                               camera_.fx, options_.zero_velocity);
+      if (frame->stationary) ++stationary_intervals_;
+    }
   }
+  if (holding_still_ && !frame->stationary) holding_still_ = false;
   const int tracked = features_.AddFrame(frame->id, features_n);
   lost_frames_ = tracked < options_.failure.min_tracked_features ? lost_frames_ + 1 : 0;
   window_.push_back(std::move(frame));
@@ -141,7 +148,7 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   }
 
   const NavState previous = n >= 2 ? window_[n - 2]->State() : window_.back()->State();
-  features_.Triangulate(CameraPoses());
+  if (!holding_still_) features_.Triangulate(CameraPoses());
   Failure failure;
   const auto start = std::chrono::steady_clock::now();
   const bool solved = Optimize(keyframe && full, &failure.reason);
@@ -168,7 +175,6 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   if (options_.pose_covariance) {
     const auto covariance_start = std::chrono::steady_clock::now();
     newest_pose_covariance_ = NewestPoseCovariance();
-    if (newest_pose_covariance_) window_.back()->P_pose = *newest_pose_covariance_;
     timing_.covariance_s += SecondsSince(covariance_start);
   }
   if (full) {
@@ -220,6 +226,7 @@ bool Estimator::TryInitialize() {
                                                     prior.accel_bias_std, prior.gyro_bias_std);
   }
   initialized_ = true;
+  holding_still_ = result.stationary;
   if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;
   return true;
 }
@@ -255,8 +262,10 @@ void Estimator::Reset() {
   features_.Clear();
   reprojection_factors_.Clear();
   prior_.reset();
+  anchored_prior_.reset();
   bias_prior_.reset();
   initialized_ = false;
+  holding_still_ = false;
   lost_frames_ = 0;
 }
 

@@ -77,6 +77,10 @@ class Estimator {
   int marginalization_failures() const { return marginalization_failures_; }
   const EstimatorTiming& timing() const { return timing_; }
   const GatingStats& gating() const { return gating_; }
+  // Frame intervals the zero-velocity detector found stationary (counted when it runs).
+  int stationary_intervals() const { return stationary_intervals_; }
+  // Whether the estimator holds a static start still (no motion seen since).
+  bool holding_still() const { return holding_still_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
   // The initializer's last failure reason (empty when it never ran or never failed).
   const std::string& init_failure_reason() const { return init_failure_reason_; }
@@ -91,8 +95,9 @@ class Estimator {
     double speed_bias[kSpeedBiasSize] = {};
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
-    // The pose covariance estimated when this frame was the newest (zero before: the initial window).
-    Matrix6d P_pose = Matrix6d::Zero();
+    // The interval from the previous window frame stands still (zero_velocity_detector.h); computed only
+    // when options.zero_velocity asks for it.
+    bool stationary = false;
 
     NavState State() const;
     void SetState(const NavState& s);
@@ -113,6 +118,13 @@ class Estimator {
   void AddStateBlocks(const Elimination& elimination, WindowProblem* w);
   void AddPriors(WindowProblem* w);
   void AddImuFactors(WindowProblem* w);
+  // Zero-velocity factors on the stationary intervals (zero_velocity_factor.h), when the update is on or a
+  // static start is held.
+  void AddZeroVelocityFactors(WindowProblem* w);
+  bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
+  // The zero-velocity terms that involve the oldest frame (for its marginalization); `costs` owns them.
+  void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                                     std::vector<MarginalizationTerm>* terms);
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
   ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
@@ -131,6 +143,9 @@ class Estimator {
   // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
   // fails.
   void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
+  // The same for anchored_prior_, which starts as the gauge on the oldest frame when it is null.
+  void KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
+                         const std::set<const double*>& dropped);
   void Reset();
   // The newest pose's covariance from the window's information (estimator_covariance.cc).
   std::optional<Matrix6d> NewestPoseCovariance();
@@ -158,6 +173,11 @@ class Estimator {
   std::deque<std::unique_ptr<Frame>> window_;
   FeatureManager features_;
   std::shared_ptr<LinearPrior> prior_;
+  // prior_ with the gauge of the run (pose_covariance.h): the first marginalization starts from the
+  // information that holds the oldest frame's position and yaw, and every later one carries it on. Only the
+  // pose covariance uses it; null before the first marginalization, after a reset, or when pose_covariance
+  // is off.
+  std::shared_ptr<LinearPrior> anchored_prior_;
   // The initial bias prior (options_.prior) on the oldest frame's speed-bias block, from initialization until
   // that frame is marginalized (its information then moves into prior_). Only MarginalizeOldest and Reset
   // remove the oldest frame, and both drop this prior, so while it exists it belongs to window_.front().
@@ -168,6 +188,9 @@ class Estimator {
   PoseManifold pose_manifold_;
 
   bool initialized_ = false;
+  // A static start holds the window still (no triangulation) until the first interval that moves.
+  bool holding_still_ = false;
+  int stationary_intervals_ = 0;
   uint64_t next_frame_id_ = 0;
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;

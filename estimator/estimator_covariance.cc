@@ -1,7 +1,7 @@
 // The newest pose's covariance: the window's information at the current estimate (the same factors the
-// solve used, robust loss applied as Ceres does), the feature depths eliminated by the marginalization's
-// Schur complement, the gauge fixed at the oldest frame and chained from its own covariance
-// (pose_covariance.h).
+// solve used, robust loss applied as Ceres does, with the anchored prior in place of the solve's), the
+// feature depths eliminated by the marginalization's Schur complement, the gauge held at the run's first
+// frame (pose_covariance.h).
 #include <map>
 #include <memory>
 #include <set>
@@ -37,7 +37,8 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
 
   // The depths eliminated: what is left is the information of the window's states.
   LinearPrior states;
-  if (!Marginalize(prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold, &states))
+  if (!Marginalize(anchored_prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold,
+                   &states))
     return std::nullopt;
   std::map<const double*, int> column;
   int c = 0;
@@ -48,11 +49,11 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   const Frame& oldest = *window_.front();
   const Frame& newest = *window_.back();
   if (!column.count(oldest.pose) || !column.count(newest.pose)) return std::nullopt;
-  const NavState o = oldest.State(), n = newest.State();
-  Matrix6d relative;
-  if (!GaugeFixedCovariance(states.H, column[oldest.pose], o.q_WB, column[newest.pose], &relative))
-    return std::nullopt;
-  return ChainGaugeCovariance(relative, oldest.P_pose, o.p_W, o.q_WB, n.p_W, n.q_WB);
+  // Until the first frame leaves the window (or when the anchored prior was lost), it is the oldest one.
+  if (!anchored_prior_) AddGaugeInformation(oldest.State().q_WB, column[oldest.pose], &states.H);
+  Matrix6d covariance;
+  if (!MarginalPoseCovariance(states.H, column[newest.pose], &covariance)) return std::nullopt;
+  return covariance;
 }
 
 }  // namespace vigil::estimator

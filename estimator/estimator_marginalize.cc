@@ -5,6 +5,7 @@
 
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
+#include "estimator/zero_velocity_factor.h"
 
 namespace vigil::estimator {
 
@@ -18,6 +19,31 @@ void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
     prior_.reset();
     ++marginalization_failures_;
   }
+}
+
+void Estimator::KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
+                                  const std::set<const double*>& dropped) {
+  const LinearPrior gauge = GaugePrior(window_.front()->pose);
+  const LinearPrior* previous = anchored_prior_ ? anchored_prior_.get() : &gauge;
+  auto anchored = std::make_shared<LinearPrior>();
+  if (Marginalize(previous, terms, dropped, options_.window.marginalization_eigen_threshold, anchored.get()))
+    anchored_prior_ = std::move(anchored);
+  else
+    anchored_prior_.reset();
+}
+
+void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                                              std::vector<MarginalizationTerm>* terms) {
+  if (!ZeroVelocityActive() || window_.size() < 2 || !window_[1]->stationary) return;
+  const ZeroVelocityOptions& o = options_.zero_velocity;
+  Frame& oldest = *window_[0];
+  Frame& second = *window_[1];
+  auto velocity = std::make_unique<ZeroVelocityFactor>(o.velocity_std_mps);
+  terms->push_back({velocity.get(), nullptr, {oldest.speed_bias}});
+  costs->push_back(std::move(velocity));
+  auto motion = std::make_unique<NoMotionFactor>(o.position_std_m, o.rotation_std_rad);
+  terms->push_back({motion.get(), nullptr, {oldest.pose, second.pose}});
+  costs->push_back(std::move(motion));
 }
 
 void Estimator::MarginalizeOldest(bool with_prior) {
@@ -34,6 +60,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
           {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
       costs.push_back(std::move(factor));
     }
+    AppendOldestZeroVelocityTerms(&costs, &terms);
     std::vector<ReprojectionTerm> reprojections;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
@@ -43,6 +70,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     for (const ReprojectionTerm& term : reprojections)
       terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
     KeepPrior(terms, dropped);
+    if (options_.pose_covariance) KeepAnchoredPrior(terms, dropped);
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   features_.RemoveFrame(oldest.id, CameraPoses());
@@ -58,6 +86,11 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
       (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
     KeepPrior({}, {second_newest.pose, second_newest.speed_bias});
   }
+  if (with_prior && anchored_prior_ &&
+      (anchored_prior_->Involves(second_newest.pose) || anchored_prior_->Involves(second_newest.speed_bias)))
+    KeepAnchoredPrior({}, {second_newest.pose, second_newest.speed_bias});
+  // The newest frame's interval now starts at the frame before the dropped one: still when both were.
+  newest.stationary = newest.stationary && second_newest.stationary;
   // The newest frame's IMU now starts at the frame before the dropped one.
   if (second_newest.imu_from_prev) {
     Preintegration merged = *second_newest.imu_from_prev;

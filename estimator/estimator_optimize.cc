@@ -13,6 +13,7 @@
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
 #include "estimator/imu_gating.h"
+#include "estimator/zero_velocity_factor.h"
 
 namespace vigil::estimator {
 namespace {
@@ -130,6 +131,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   AddStateBlocks(elimination, &window);
   AddPriors(&window);
   AddImuFactors(&window);
+  AddZeroVelocityFactors(&window);
   AddReprojectionFactors(elimination, &window);
   const NavState oldest_before = window_.front()->State();
   const ceres::Solver::Summary summary = SolveAndGate(marginalize_oldest_next, &window);
@@ -204,6 +206,25 @@ void Estimator::AddImuFactors(WindowProblem* w) {
         factor.get(), {window_[k - 1]->pose, w->speed_bias[k - 1], window_[k]->pose, w->speed_bias[k]}});
     w->problem.AddResidualBlock(factor.get(), nullptr, term.blocks[0], term.blocks[1], term.blocks[2],
                                 term.blocks[3]);
+    w->costs.push_back(std::move(factor));
+  }
+}
+
+void Estimator::AddZeroVelocityFactors(WindowProblem* w) {
+  if (!ZeroVelocityActive()) return;
+  const ZeroVelocityOptions& o = options_.zero_velocity;
+  std::vector<bool> still(window_.size(), false);
+  for (std::size_t k = 1; k < window_.size(); ++k) {
+    if (!window_[k]->stationary) continue;
+    still[k - 1] = still[k] = true;
+    auto factor = std::make_unique<NoMotionFactor>(o.position_std_m, o.rotation_std_rad);
+    w->problem.AddResidualBlock(factor.get(), nullptr, window_[k - 1]->pose, window_[k]->pose);
+    w->costs.push_back(std::move(factor));
+  }
+  for (std::size_t k = 0; k < window_.size(); ++k) {
+    if (!still[k]) continue;
+    auto factor = std::make_unique<ZeroVelocityFactor>(o.velocity_std_mps);
+    w->problem.AddResidualBlock(factor.get(), nullptr, w->speed_bias[k]);
     w->costs.push_back(std::move(factor));
   }
 }

@@ -29,6 +29,7 @@ struct InitResult {
   std::vector<NavState> states;                // one per window frame, in W (gravity along -z), metric
   std::map<int, Eigen::Vector3d> landmarks_W;  // optional triangulated points (depth initialization)
   std::string failure_reason;                  // set when TryInitialize returns false
+  bool stationary = false;                     // a static start: hold the window still until it moves
 };
 
 class Initializer {

@@ -1,8 +1,11 @@
 #include "estimator/make_initializer.h"
 
+#include <utility>
+
 #include "core/error.h"
 #include "estimator/ground_truth_initializer.h"
 #include "estimator/init/vins_initializer.h"
+#include "estimator/static_initializer.h"
 
 namespace vigil::estimator {
 
@@ -14,9 +17,12 @@ std::unique_ptr<Initializer> MakeInitializer(const EstimatorOptions& options, co
             "estimator.init: groundtruth initialization needs ground truth, and the input has none");
       return std::make_unique<GroundTruthInitializer>(input.groundtruth, options.groundtruth_init,
                                                       input.seed);
-    case InitMode::kVins:
-      return std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2,
-                                               options.window.size + 1);
+    case InitMode::kVins: {
+      auto vins = std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2,
+                                                    options.window.size + 1);
+      if (!options.zero_velocity.static_init) return vins;
+      return std::make_unique<StaticInitializer>(std::move(vins), options.zero_velocity, input.camera.fx);
+    }
   }
   throw InputError("estimator.init: unknown initialization mode");
 }

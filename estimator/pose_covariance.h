@@ -1,37 +1,38 @@
 // The covariance of the newest pose of the window, in the pose tangent [delta p_W, delta theta_B]
 // (pose_manifold.h: position in the world frame, rotation perturbed on the right, in the body frame).
 //
-// The window's information matrix has four unobservable directions (position and yaw, the gauge), so the
-// newest pose has a covariance only relative to something fixed. vigil fixes the oldest frame's position and
-// yaw (GaugeFixedCovariance: the marginal of the newest pose given them) and then adds the oldest frame's own
-// uncertainty along those four directions, as it was estimated when that frame was the newest
-// (ChainGaugeCovariance). The cross-covariance between the two parts is neglected; the oldest frame's
-// covariance is the one of its time as the newest frame, larger than what the window knows of it now.
+// A visual-inertial window cannot observe its position and yaw (four gauge directions), so a pose has a
+// covariance only relative to something held fixed. vigil holds the position and yaw of the run's first
+// frame, as a filter started from a known pose does: its covariance is the uncertainty accumulated since
+// the start. The first frame is the oldest of the window until it is marginalized; the estimator then
+// carries the holding information on in a second marginalization prior (the one of the solve plus the gauge,
+// Estimator::anchored_prior_), so the newest pose's marginal of the window information with that prior is
+// its covariance relative to the run's first frame, cross-covariances included. Before the first
+// marginalization the oldest frame is held directly (AddGaugeInformation).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "estimator/marginalization.h"
+
 namespace vigil::estimator {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Information added along the gauge directions of the oldest pose to fix them: 1e8 / m^2 and 1e8 / rad^2,
+// Information added along the gauge directions of the first pose to hold them: 1e8 / m^2 and 1e8 / rad^2,
 // a std of 0.1 mm and 0.006 deg, four orders of magnitude stiffer than what a window knows of its poses.
 inline constexpr double kGaugeInformation = 1e8;
 
-// The newest pose's covariance from the information matrix `H` (tangent space, symmetric positive
-// semi-definite) with the oldest pose's position and yaw held (its tangent block starts at `oldest_column`,
-// its orientation is q_WB_oldest) and every other state marginalized; the newest pose's tangent block starts
-// at `newest_column`. False when the conditioned matrix is not positive definite.
-bool GaugeFixedCovariance(const Eigen::MatrixXd& H, int oldest_column, const Eigen::Quaterniond& q_WB_oldest,
-                          int newest_column, Matrix6d* covariance);
+// A linear prior on the pose block at `pose` (kPoseSize doubles, at its current value) that holds its
+// position and its yaw about the world z axis with kGaugeInformation; roll and pitch stay free.
+LinearPrior GaugePrior(double* pose);
 
-// relative + G A oldest_global A^T G^T: the newest pose's covariance with the oldest frame's uncertainty
-// along the gauge (A: its position and world yaw from its tangent; G: how moving the oldest frame's position
-// and rotating it about the world z axis moves the newest pose).
-Matrix6d ChainGaugeCovariance(const Matrix6d& relative, const Matrix6d& oldest_global,
-                              const Eigen::Vector3d& p_W_oldest, const Eigen::Quaterniond& q_WB_oldest,
-                              const Eigen::Vector3d& p_W_newest, const Eigen::Quaterniond& q_WB_newest);
+// Adds the information of GaugePrior at the pose whose tangent block starts at `column` of `H`.
+void AddGaugeInformation(const Eigen::Quaterniond& q_WB, int column, Eigen::MatrixXd* H);
+
+// The 6x6 block at `column` of the inverse of the information matrix `H` (tangent space, symmetric): the
+// marginal covariance of that pose. False when `H` is not positive definite or the block not finite.
+bool MarginalPoseCovariance(const Eigen::MatrixXd& H, int column, Matrix6d* covariance);
 
 }  // namespace vigil::estimator

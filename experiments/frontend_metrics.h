@@ -13,7 +13,7 @@
 //    "time_per_image_ms": ..}                                                  (frontend.json only: timing)
 // error_by_age_px groups the errors by the observation's age (frames since its track's first observation) over
 // the bins of track_length_bins; a bin without observations has STATS of n = 0.
-// STATS as everywhere (experiments/statistics.h). Every number but the timing is a deterministic function of
+// STATS as everywhere (evaluation/statistics.h). Every number but the timing is a deterministic function of
 // the images and the options.
 #pragma once
 

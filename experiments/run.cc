@@ -158,8 +158,9 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
           ? evaluation::EvaluateTrajectory(groundtruth, result.trajectory, config.evaluation)
           : evaluation::TrajectoryEvaluation{};
   if (data.with_groundtruth)
-    evaluation.nees = evaluation::ComputeNees(groundtruth, result.trajectory, result.pose_covariances,
-                                              evaluation.alignment);
+    evaluation.nees = evaluation::ComputeNees(
+        groundtruth, result.trajectory, result.pose_covariances,
+        evaluation::GaugeAlignment(groundtruth, result.trajectory, result.pose_covariances));
   summary.wall.evaluate_s = SecondsSince(t);
 
   RunConfig resolved = config;  // ToYaml visits (non-const)

@@ -1,7 +1,7 @@
 // Aligning an estimated trajectory onto the ground truth for display (figure 3).
 //
 // The metrics themselves come from the run's metrics.json; this places the estimate in the ground-truth frame
-// the way the evaluation does (experiments/association.h and experiments/alignment.h, with the run's
+// the way the evaluation does (evaluation/association.h and evaluation/alignment.h, with the run's
 // evaluation.align) so that the curves can be compared.
 #pragma once
 

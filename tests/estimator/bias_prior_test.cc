@@ -77,13 +77,17 @@ TEST(BiasPriorTest, TightPriorHoldsTheBiasThroughTheRun) {
   const Dataset data = sim::Simulate(sim_options, 5);
   const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 5);
 
-  EstimatorOptions tight;
+  // A short window with frequent keyframes, so that the prior's frame leaves it early in the 4 s run.
+  EstimatorOptions short_window;
+  short_window.window.size = 10;
+  short_window.window.min_parallax_px = 10.0;
+  EstimatorOptions tight = short_window;
   tight.prior.accel_bias_std = 1e-3;
   const EstimatorResult with_prior = RunEstimator(tight, input);
   ASSERT_TRUE(with_prior.ok) << with_prior.failure_reason;
   EXPECT_GT(with_prior.keyframes, 2 * tight.window.size);  // the prior's frame left the window long ago
 
-  EstimatorOptions off;
+  EstimatorOptions off = short_window;
   off.prior.accel_bias_std = 0.0;
   off.prior.gyro_bias_std = 0.0;
   const EstimatorResult without_prior = RunEstimator(off, input);

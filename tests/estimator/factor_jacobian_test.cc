@@ -11,6 +11,7 @@
 #include "estimator/marginalization.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/reprojection_factor.h"
+#include "estimator/zero_velocity_factor.h"
 
 namespace vigil::estimator {
 namespace {
@@ -129,6 +130,30 @@ TEST(FactorJacobianTest, ImuFactorWithInflatedSamplesAndGating) {
   WorstJacobianError(factor, {pose_i, sb_i, pose_j, sb_j});
   ASSERT_TRUE(factor.Evaluate(p, r_gated.data(), nullptr));
   EXPECT_LT((r_gated - r_nominal / 3.0).norm(), 1e-12 * r_nominal.norm());
+}
+
+TEST(FactorJacobianTest, ZeroVelocityFactors) {
+  const ZeroVelocityFactor velocity(0.01);
+  const std::vector<double> sb = {0.5, 0.2, -0.1, 0.07, -0.02, 0.03, 0.004, 0.012, -0.003};
+  WorstJacobianError(velocity, {sb});
+  Eigen::Vector3d r;
+  const double* v[1] = {sb.data()};
+  ASSERT_TRUE(velocity.Evaluate(v, r.data(), nullptr));
+  EXPECT_LT((r - Eigen::Vector3d(50, 20, -10)).norm(), 1e-12);  // the velocity over its std, biases unused
+  // Two poses that differ (the residual is not at its zero), and two that are equal (it is).
+  const NoMotionFactor motion(0.002, 0.01);
+  const std::vector<double> pose_i = Pose(Eigen::Vector3d(1, 2, 3), ExpQ(Eigen::Vector3d(0.1, -0.2, 0.3)));
+  const std::vector<double> pose_j =
+      Pose(Eigen::Vector3d(1.02, 1.99, 3.01), ExpQ(Eigen::Vector3d(0.12, -0.25, 0.28)));
+  WorstJacobianError(motion, {pose_i, pose_j});
+  WorstJacobianError(motion, {pose_i, pose_i});
+  Eigen::Matrix<double, 6, 1> r6;
+  const double* same[2] = {pose_i.data(), pose_i.data()};
+  ASSERT_TRUE(motion.Evaluate(same, r6.data(), nullptr));
+  EXPECT_LT(r6.norm(), 1e-12);
+  const double* differ[2] = {pose_i.data(), pose_j.data()};
+  ASSERT_TRUE(motion.Evaluate(differ, r6.data(), nullptr));
+  EXPECT_LT((r6.head<3>() - Eigen::Vector3d(10, -5, 5)).norm(), 1e-9);
 }
 
 TEST(FactorJacobianTest, BiasPriorFactor) {

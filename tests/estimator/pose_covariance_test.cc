@@ -15,9 +15,9 @@
 namespace vigil::estimator {
 namespace {
 
-// Holding the oldest pose's position and yaw is conditioning the Gaussian of information H on those four
+// Holding a pose's position and yaw is conditioning the Gaussian of information H on those four
 // combinations g = A x: the newest block of Sigma - Sigma A^T (A Sigma A^T)^-1 A Sigma, Sigma = H^-1.
-TEST(PoseCovariance, GaugeFixingIsConditioningOnPositionAndYaw) {
+TEST(PoseCovariance, HoldingTheGaugeIsConditioningOnPositionAndYaw) {
   std::mt19937_64 rng(7);
   std::normal_distribution<double> n01;
   const int n = 6 + 9 + 6;  // oldest pose, a speed-bias block, newest pose
@@ -28,8 +28,10 @@ TEST(PoseCovariance, GaugeFixingIsConditioningOnPositionAndYaw) {
   const Eigen::Quaterniond q_oldest(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
   const int newest = 15;
 
+  Eigen::MatrixXd held = H;
+  AddGaugeInformation(q_oldest, 0, &held);
   Matrix6d fixed;
-  ASSERT_TRUE(GaugeFixedCovariance(H, 0, q_oldest, newest, &fixed));
+  ASSERT_TRUE(MarginalPoseCovariance(held, newest, &fixed));
 
   const Eigen::MatrixXd Sigma = H.inverse();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, n);
@@ -47,35 +49,36 @@ TEST(PoseCovariance, AGaugeOnlyMatrixHasNoCovariance) {
   // Information on roll and pitch of one pose only: position and yaw held, the rest (the newest) is free.
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(12, 12);
   H.block(3, 3, 2, 2).setIdentity();
+  AddGaugeInformation(Eigen::Quaterniond::Identity(), 0, &H);
   Matrix6d P;
-  EXPECT_FALSE(GaugeFixedCovariance(H, 0, Eigen::Quaterniond::Identity(), 6, &P));
+  EXPECT_FALSE(MarginalPoseCovariance(H, 6, &P));
 }
 
-// The oldest frame's yaw uncertainty (std 0.01 rad) moves a newest frame 10 m further along x by 0.1 m
-// along y, and turns it by the same yaw; its position uncertainty passes through unchanged.
-TEST(PoseCovariance, ChainingAddsTheOldestFramesGaugeUncertainty) {
-  Matrix6d oldest = Matrix6d::Zero();
-  oldest.topLeftCorner<3, 3>() = 1e-4 * Eigen::Matrix3d::Identity();  // 1 cm per axis
-  oldest(5, 5) = 1e-4;                                                // body z = world z here
-  oldest(3, 3) = 4.0;                                                 // roll: not a gauge direction, ignored
-  const Matrix6d relative = 1e-6 * Matrix6d::Identity();
-  const Eigen::Quaterniond q_newest(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
-  const Matrix6d P =
-      ChainGaugeCovariance(relative, oldest, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(),
-                           Eigen::Vector3d(10, 0, 0), q_newest);
-  EXPECT_NEAR(P(0, 0), 1e-6 + 1e-4, 1e-12);
-  EXPECT_NEAR(P(1, 1), 1e-6 + 1e-4 + 100 * 1e-4, 1e-12);
-  EXPECT_NEAR(P(2, 2), 1e-6 + 1e-4, 1e-12);
-  // World z is the newest body's y axis (rotated +90 deg about x): the yaw appears there.
-  EXPECT_NEAR(P(4, 4), 1e-6 + 1e-4, 1e-12);
-  EXPECT_NEAR(P(3, 3), 1e-6, 1e-12);
-  EXPECT_NEAR(P(5, 5), 1e-6, 1e-12);
-  EXPECT_NEAR(P(1, 4), 10 * 1e-4, 1e-12);  // the y shift and the yaw are one and the same draw
+// The gauge prior is the same information as AddGaugeInformation, at the pose's value: zero residual there,
+// stiff in position and in the yaw about world z, blind to roll and pitch.
+TEST(PoseCovariance, TheGaugePriorHoldsPositionAndYawOnly) {
+  const Eigen::Quaterniond q_WB(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()));
+  double pose[kPoseSize] = {1, 2, 3, q_WB.x(), q_WB.y(), q_WB.z(), q_WB.w()};
+  const LinearPrior prior = GaugePrior(pose);
+  ASSERT_EQ(prior.blocks.size(), 1u);
+  EXPECT_EQ(prior.blocks[0].address, pose);
+  EXPECT_EQ(prior.r.norm(), 0.0);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(6, 6);
+  AddGaugeInformation(q_WB, 0, &H);
+  EXPECT_LT((prior.H - H).norm(), 1e-6);
+  EXPECT_LT((prior.J.transpose() * prior.J - prior.H).norm(), 1e-6);
+  // Rotated +90 deg about x, the body y axis is world z: a body-y rotation
+  // is a yaw, body x and z rotations are roll and pitch.
+  Eigen::Matrix<double, 6, 1> yaw = Eigen::Matrix<double, 6, 1>::Zero(), roll = yaw;
+  yaw(4) = 1e-3;
+  roll(3) = 1e-3;
+  EXPECT_NEAR(yaw.dot(prior.H * yaw), kGaugeInformation * 1e-6, 1e-3);
+  EXPECT_NEAR(roll.dot(prior.H * roll), 0.0, 1e-9);
 }
 
-// Every output pose of a short paper run has a finite, positive definite covariance. The errors are smaller
-// than it predicts (measured: mean NEES 0.12 position, 0.69 orientation on this run; docs/estimator.md): the
-// covariance is conservative, never overconfident, and not absurdly large either.
+// Every output pose of a short paper run has a finite, positive definite covariance, and the NEES in the
+// covariance's gauge is of the order of 3 (measured on this run: 0.67 position,
+// 0.72 orientation; docs/estimator.md): neither absurdly cautious nor overconfident.
 TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
   sim::SimOptions sim_options;
   sim_options.duration_s = 8.0;
@@ -94,18 +97,17 @@ TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
     ASSERT_TRUE(InterpolateNavState(data.groundtruth, pose.t_ns, &truth));
     gt.push_back({pose.t_ns, truth.p_W, truth.q_WB});
   }
-  const evaluation::TrajectoryEvaluation ev =
-      evaluation::EvaluateTrajectory(gt, result.trajectory, evaluation::EvaluationOptions{});
   const evaluation::NeesStatistics nees =
-      evaluation::ComputeNees(gt, result.trajectory, result.pose_covariances, ev.alignment);
+      evaluation::ComputeNees(gt, result.trajectory, result.pose_covariances,
+                               evaluation::GaugeAlignment(gt, result.trajectory, result.pose_covariances));
   std::printf("NEES position %.2f orientation %.2f over %lld poses, covariance %.3f s of optimize %.3f s\n",
               nees.position.mean, nees.orientation.mean, static_cast<long long>(nees.position.n),
               result.timing.covariance_s, result.timing.optimize_s);
   EXPECT_EQ(nees.position.n, static_cast<long long>(result.trajectory.size()));
-  EXPECT_GT(nees.position.mean, 0.03);
-  EXPECT_LT(nees.position.mean, 3.0);
-  EXPECT_GT(nees.orientation.mean, 0.1);
-  EXPECT_LT(nees.orientation.mean, 3.0);
+  EXPECT_GT(nees.position.mean, 0.3);
+  EXPECT_LT(nees.position.mean, 10.0);
+  EXPECT_GT(nees.orientation.mean, 0.3);
+  EXPECT_LT(nees.orientation.mean, 10.0);
 }
 
 }  // namespace

@@ -95,6 +95,32 @@ TEST(Nees, GroundTruthIsBroughtIntoTheEstimateFrame) {
   EXPECT_GT(ComputeNees(moved, run.est, covariances, {}).position.mean, 1000.0);
 }
 
+// The covariance's gauge is the first pose: GaugeAlignment maps the estimate's first usable pose onto the
+// ground truth in position and yaw, whatever the other poses do.
+TEST(Nees, TheGaugeAlignmentHoldsTheFirstPose) {
+  const Matrix6d P = KnownNeesCovariance();
+  NeesSample run = DrawNeesSample(P, 4);
+  SimilarityTransform est_to_gt;
+  est_to_gt.R = Eigen::AngleAxisd(-1.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  est_to_gt.t = Eigen::Vector3d(-4.0, 1.0, 2.0);
+  std::vector<Matrix6d> covariances(run.est.size(), P);
+  covariances[0] = Matrix6d::Constant(std::nan(""));  // the first pose has no covariance: the second holds
+  run.est[1] = run.gt[1];
+  Trajectory moved = run.gt;
+  for (StampedPose& g : moved) {
+    g.p_W = est_to_gt.Apply(g.p_W);
+    g.q_WB = est_to_gt.Rotate(g.q_WB);
+  }
+  const SimilarityTransform gauge = GaugeAlignment(moved, run.est, covariances);
+  EXPECT_LT((gauge.R - est_to_gt.R).norm(), 1e-9);
+  EXPECT_LT((gauge.t - est_to_gt.t).norm(), 1e-9);
+  EXPECT_EQ(gauge.scale, 1.0);
+  // A roll of the first pose's estimate is not a gauge direction: the yaw stays that of the ground truth.
+  run.est[1].q_WB = run.est[1].q_WB * Eigen::Quaterniond(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitX()));
+  EXPECT_LT((GaugeAlignment(moved, run.est, covariances).R - est_to_gt.R).norm(), 0.01);
+  EXPECT_TRUE(GaugeAlignment(moved, run.est, {}).R.isIdentity());  // no covariances: the identity
+}
+
 TEST(Nees, PosesWithoutAUsableCovarianceAreSkipped) {
   const Matrix6d P = KnownNeesCovariance();
   const NeesSample run = DrawNeesSample(P, 3);

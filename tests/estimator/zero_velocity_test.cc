@@ -1,0 +1,181 @@
+// Zero-velocity detection (zero_velocity_detector.h), its factors' Jacobians are in factor_jacobian_test.cc,
+// the static initialization (static_initializer.h), and an estimator run on a start that stands still.
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "core/random.h"
+#include "core/so3.h"
+#include "estimator/run_estimator.h"
+#include "estimator/static_initializer.h"
+#include "estimator/zero_velocity_detector.h"
+#include "experiments/run_config.h"
+#include "experiments/run_inputs.h"
+#include "sim/simulator.h"
+
+namespace vigil::estimator {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kTestFx = 458.0;
+constexpr double kTestImuRateHz = 200.0;
+
+ImuNoiseDensities ZuptNoise() {
+  ImuNoiseDensities n;
+  n.gyro_noise_density = 1.7e-4;
+  n.accel_noise_density = 2.0e-3;
+  return n;
+}
+
+// `samples` IMU samples of a platform at rest (tilted, with biases) plus white noise at the model's
+// densities, plus `motion_accel` m/s^2 of sinusoidal acceleration along x_B.
+Preintegration StillImuInterval(Rng& rng, int samples, double motion_accel) {
+  const ImuNoiseDensities noise = ZuptNoise();
+  const Eigen::Matrix3d R_WB = ExpQ(Eigen::Vector3d(0.1, -0.05, 0.7)).toRotationMatrix();
+  const Eigen::Vector3d f_B =
+      R_WB.transpose() * Eigen::Vector3d(0, 0, 9.81) + Eigen::Vector3d(0.05, 0, -0.02);
+  const Eigen::Vector3d b_g(0.002, -0.01, 0.077);
+  const double sa = noise.accel_noise_density * std::sqrt(kTestImuRateHz);
+  const double sg = noise.gyro_noise_density * std::sqrt(kTestImuRateHz);
+  auto sample_a = [&](int k) {
+    return Eigen::Vector3d(f_B + sa * rng.NormalVector3() +
+                           motion_accel * std::sin(0.3 * k) * Eigen::Vector3d::UnitX());
+  };
+  auto sample_w = [&]() { return Eigen::Vector3d(b_g + sg * rng.NormalVector3()); };
+  Preintegration pre(sample_a(0), sample_w(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), noise,
+                     kTestImuRateHz);
+  for (int k = 1; k < samples; ++k) pre.Push(1.0 / kTestImuRateHz, sample_a(k), sample_w());
+  return pre;
+}
+
+// `count` features at normalized points, observed again with pixel noise `std_px` and displaced by
+// `shift_px` (all features the same way: a small translation).
+void SharedFeatures(Rng& rng, int count, double std_px, double shift_px,
+                    std::map<int, Eigen::Vector2d>* first, std::map<int, Eigen::Vector2d>* second) {
+  for (int id = 0; id < count; ++id) {
+    const Eigen::Vector2d n(0.4 * rng.Normal(), 0.3 * rng.Normal());
+    (*first)[id] = n + std_px / kTestFx * Eigen::Vector2d(rng.Normal(), rng.Normal());
+    (*second)[id] =
+        n + (std_px * Eigen::Vector2d(rng.Normal(), rng.Normal()) + Eigen::Vector2d(shift_px, 0)) / kTestFx;
+  }
+}
+
+TEST(ZeroVelocityDetectorTest, ImuTestSeesRestAndMotion) {
+  ZeroVelocityOptions options;
+  options.imu_noise_multiplier = 1.0;
+  Rng rng(1, "zero_velocity_imu");
+  int still = 0, moving = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    still += ImuStationarity(StillImuInterval(rng, 10, 0.0), options)->passed();
+    moving += ImuStationarity(StillImuInterval(rng, 10, 0.5), options)->passed();
+  }
+  // At rest the statistic is chi-square: about probability (0.99) of the intervals pass.
+  EXPECT_GE(still, 190);
+  // 0.5 m/s^2 of motion is 18 times the per-sample accelerometer noise: never taken for rest.
+  EXPECT_EQ(moving, 0);
+  options.imu_noise_multiplier = 0.0;
+  EXPECT_FALSE(ImuStationarity(StillImuInterval(rng, 10, 0.0), options).has_value());
+}
+
+TEST(ZeroVelocityDetectorTest, ImageTestSeesRestAndMotion) {
+  ZeroVelocityOptions options;  // image test on, 0.5 px
+  Rng rng(2, "zero_velocity_image");
+  int still = 0, moving = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::map<int, Eigen::Vector2d> a, b, c, d;
+    SharedFeatures(rng, 50, 0.5, 0.0, &a, &b);
+    SharedFeatures(rng, 50, 0.5, 1.5, &c, &d);  // a shift of three noise std
+    const auto rest = ImageStationarity(a, b, kTestFx, options);
+    ASSERT_TRUE(rest.has_value());
+    EXPECT_EQ(rest->dof, 100);
+    still += rest->passed();
+    moving += ImageStationarity(c, d, kTestFx, options)->passed();
+  }
+  EXPECT_GE(still, 190);
+  EXPECT_EQ(moving, 0);
+  // Too few shared features: no test; no test at all: not stationary.
+  std::map<int, Eigen::Vector2d> a, b;
+  SharedFeatures(rng, 5, 0.5, 0.0, &a, &b);
+  EXPECT_FALSE(ImageStationarity(a, b, kTestFx, options).has_value());
+  EXPECT_FALSE(IsStationary(std::nullopt, std::nullopt));
+}
+
+TEST(ZeroVelocityDetectorTest, EveryEnabledTestMustPass) {
+  ZeroVelocityOptions options;
+  options.imu_noise_multiplier = 1.0;
+  Rng rng(3, "zero_velocity_rule");
+  std::map<int, Eigen::Vector2d> a, b;
+  SharedFeatures(rng, 50, 0.5, 0.0, &a, &b);
+  EXPECT_TRUE(IntervalIsStationary(a, b, StillImuInterval(rng, 10, 0.0), kTestFx, options));
+  EXPECT_FALSE(IntervalIsStationary(a, b, StillImuInterval(rng, 10, 1.0), kTestFx, options));
+  std::map<int, Eigen::Vector2d> c, d;
+  SharedFeatures(rng, 50, 0.5, 5.0, &c, &d);
+  EXPECT_FALSE(IntervalIsStationary(c, d, StillImuInterval(rng, 10, 0.0), kTestFx, options));
+}
+
+// A still window: gravity direction from the mean specific force, the gyro bias from the mean rate.
+TEST(StaticInitializerTest, StillWindowGivesTiltAndGyroBias) {
+  Rng rng(4, "static_init");
+  std::vector<InitFrame> window(11);
+  std::map<int, Eigen::Vector2d> features, unused;
+  SharedFeatures(rng, 40, 0.0, 0.0, &features, &unused);
+  for (std::size_t k = 0; k < window.size(); ++k) {
+    window[k].t_ns = static_cast<int64_t>(k) * 50'000'000;
+    window[k].features_n = features;
+    if (k > 0) window[k].imu_from_prev = StillImuInterval(rng, 10, 0.0);
+  }
+  InitResult result;
+  ASSERT_TRUE(InitializeStill(window, &result));
+  ASSERT_EQ(result.states.size(), window.size());
+  EXPECT_TRUE(result.stationary);
+  const Eigen::Matrix3d R_WB_true = ExpQ(Eigen::Vector3d(0.1, -0.05, 0.7)).toRotationMatrix();
+  const Eigen::Vector3d f_B =
+      R_WB_true.transpose() * Eigen::Vector3d(0, 0, 9.81) + Eigen::Vector3d(0.05, 0, -0.02);
+  for (const NavState& s : result.states) {
+    // Up is where the mean specific force points; yaw zero; still at the origin.
+    EXPECT_LT((s.q_WB * f_B.normalized() - Eigen::Vector3d::UnitZ()).norm(), 1e-3);
+    EXPECT_NEAR(YawOf(s.q_WB.toRotationMatrix()), 0.0, 1e-9);
+    EXPECT_EQ(s.v_W, Eigen::Vector3d::Zero());
+    EXPECT_EQ(s.p_W, Eigen::Vector3d::Zero());
+    // 100 samples of 2.4e-3 rad/s noise: the mean is within 3e-4 rad/s (about 1.2 std per axis).
+    EXPECT_LT((s.b_g - Eigen::Vector3d(0.002, -0.01, 0.077)).norm(), 1e-3);
+  }
+}
+
+// The IMU simulated along EuRoC V1_01, which stands still for its first 5.3 s: with a static start the
+// estimator initializes in the first second, holds the position while still, and goes on after the take-off.
+TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
+  const fs::path root = fs::path(VIGIL_SOURCE_DIR);
+  if (!fs::exists(root / "../shared/data/euroc_v1_01/mav0"))
+    GTEST_SKIP() << "SKIPPED: ../shared/data/euroc_v1_01 is absent";
+  experiments::RunConfig config =
+      experiments::LoadRunConfig((root / "configs/recording_v1_01.yaml").string());
+  config.sim.duration_s = 9.0;
+  const Dataset data = sim::Simulate(config.sim, 1);
+  config.estimator.init = InitMode::kVins;
+  config.estimator.zero_velocity.static_init = true;
+  config.estimator.zero_velocity.update = true;
+  const EstimatorResult result =
+      RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+  ASSERT_TRUE(result.ok) << result.failure_reason;
+  ASSERT_FALSE(result.states.empty());
+  const NavState& first = result.states.front();
+  EXPECT_LT(NsToS(first.t_ns - data.frames.front().t_ns), 1.0);
+  // Position held while still (t < 5 s): the window keeps its first 10 still frames (no keyframe without
+  // parallax) and the newest, chained by no-motion factors of 1 mm std each, so the newest is within about
+  // sqrt(10) mm = 3 mm (one std) of the first; 2 cm is six std.
+  double worst_m = 0.0;
+  for (const NavState& s : result.states)
+    if (NsToS(s.t_ns - data.frames.front().t_ns) < 5.0)
+      worst_m = std::max(worst_m, (s.p_W - first.p_W).norm());
+  std::printf("static start at %.2f s, worst still displacement %.4f m, %zu states\n",
+              NsToS(first.t_ns - data.frames.front().t_ns), worst_m, result.states.size());
+  EXPECT_LT(worst_m, 0.02);
+  EXPECT_GT(result.states.size(), data.frames.size() - 25);
+}
+
+}  // namespace
+}  // namespace vigil::estimator
