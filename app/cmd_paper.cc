@@ -1,6 +1,6 @@
 // `vigil paper`: the paper's simulation experiment end to end (configs/paper_sweep.yaml: sweep + tables 2-4 +
 // figures), then the estimator-noise ablation (configs/paper_noise_sweep.yaml into DIR/noise_ablation/) and
-// reproduction.md (the paper's claims judged, experiments/reproduction.h).
+// reproduction.md (the paper's claims judged, report/reproduction.h).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
