@@ -24,8 +24,9 @@ void AddSimulateCommand(CLI::App& root) {
   auto args = std::make_shared<Args>();
   args->config.AddTo(cmd);
   cmd->add_option("-o,--output", args->output, "dataset directory to write")->required();
-  cmd->add_flag("--images", args->images,
-                "render camera images (same as --set images.enabled=true): mav0/ (EuRoC layout) and scene.obj");
+  cmd->add_flag(
+      "--images", args->images,
+      "render camera images (same as --set images.enabled=true): mav0/ (EuRoC layout) and scene.obj");
   cmd->add_flag("--force", args->force,
                 "replace an output directory vigil wrote (files it did not write are kept)");
   SetAction(cmd, [args] {
@@ -52,8 +53,8 @@ void AddSimulateCommand(CLI::App& root) {
         d.frames.empty() ? 0.0 : static_cast<double>(observations) / static_cast<double>(d.frames.size()),
         args->output.c_str(), seconds);
     if (config.sim.images.enabled)
-      std::fprintf(stderr, "vigil simulate: %zu images %d x %d in %s/mav0/cam0/data, scene.obj\n", d.frames.size(),
-                   config.sim.camera.width, config.sim.camera.height, args->output.c_str());
+      std::fprintf(stderr, "vigil simulate: %zu images %d x %d in %s/mav0/cam0/data, scene.obj\n",
+                   d.frames.size(), config.sim.camera.width, config.sim.camera.height, args->output.c_str());
     return 0;
   });
 }

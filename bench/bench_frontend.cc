@@ -45,14 +45,21 @@ void BM_TrackFrame(benchmark::State& state) {
   camera.cx = 320.0;
   camera.cy = 240.0;
   switch (state.range(0)) {
-    case 1: options.backward_check = true; break;
-    case 2: options.clahe = true; break;
-    case 3: camera.distortion = {-0.28, 0.074, 0.0002, 0.00002}; break;
+    case 1:
+      options.backward_check = true;
+      break;
+    case 2:
+      options.clahe = true;
+      break;
+    case 3:
+      camera.distortion = {-0.28, 0.074, 0.0002, 0.00002};
+      break;
     case 4:
       options.anchor_refinement = true;
       options.klt_window_px = options.anchor_patch_px = 15;
       break;
-    default: break;
+    default:
+      break;
   }
   const std::vector<cv::Mat>& images = Sequence();
   auto tracker = std::make_unique<FeatureTracker>(options, camera);

@@ -1,5 +1,6 @@
 // Rendering cost of the simulator's camera images (sim/image_renderer.h) per 640 x 480 frame of the paper's
-// ellipse, and the PNG encoding of a frame (zlib level 1, 3, 6; counter png_bytes). Report min / median over repetitions:
+// ellipse, and the PNG encoding of a frame (zlib level 1, 3, 6; counter png_bytes). Report min / median over
+// repetitions:
 //   build/bench/bench_render --benchmark_repetitions=5 --benchmark_report_aggregates_only=false
 // Args: exposure (0: sharp, 1: motion blur with images.blur_samples sub-frames), antialias samples,
 // distortion (0/1).

@@ -5,7 +5,8 @@
 namespace vigil {
 
 std::string CameraModel::Validate() const {
-  if (T_BC.size() != 16) return "T_BC: expected 16 numbers (4x4 row-major), got " + std::to_string(T_BC.size());
+  if (T_BC.size() != 16)
+    return "T_BC: expected 16 numbers (4x4 row-major), got " + std::to_string(T_BC.size());
   const Eigen::Matrix3d R = R_BC();
   if ((R * R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0.0)
     return "T_BC: rotation part is not a proper rotation (orthonormal, det +1)";

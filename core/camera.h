@@ -33,11 +33,12 @@ struct CameraModel {
   double cx = 255.0;
   double cy = 255.0;
   double pixel_noise_px = 0.0;  // std of Gaussian pixel noise added by the simulator
-  // camera -> body, 4x4 row-major. Default: cam x = -y_B, cam y = +z_B, cam z = -x_B; t_BC = (0.05, 0.04, 0.03).
-  std::vector<double> T_BC = {0, 0, -1, 0.05,  //
-                              -1, 0, 0, 0.04,  //
-                              0, 1, 0, 0.03,   //
-                              0, 0, 0, 1};
+  // camera -> body, 4x4 row-major. Default: cam x = -y_B, cam y = +z_B, cam z = -x_B; t_BC = (0.05, 0.04,
+  // 0.03).
+  std::vector<double> T_BC = {0,  0, -1, 0.05,  //
+                              -1, 0, 0,  0.04,  //
+                              0,  1, 0,  0.03,  //
+                              0,  0, 0,  1};
   std::vector<double> distortion = {0, 0, 0, 0};  // radial-tangential k1, k2, p1, p2 (zeros: none)
 
   template <class V>

@@ -315,8 +315,8 @@ std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file, const std::vector
       const double u = seen.x(), v = seen.y();
       if (!(u >= -margin_px && v >= -margin_px && u <= camera->width + margin_px &&
             v <= camera->height + margin_px))
-        r.Fail("pixel (" + FormatDouble(o.uv_px.x()) + ", " + FormatDouble(o.uv_px.y()) + ") is outside the " +
-               std::to_string(camera->width) + " x " + std::to_string(camera->height) +
+        r.Fail("pixel (" + FormatDouble(o.uv_px.x()) + ", " + FormatDouble(o.uv_px.y()) +
+               ") is outside the " + std::to_string(camera->width) + " x " + std::to_string(camera->height) +
                " image (camera.yaml)" + (camera->HasDistortion() ? " once distorted" : ""));
     }
     frames.back().features.push_back(o);

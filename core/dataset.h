@@ -59,8 +59,8 @@ inline constexpr int64_t kSensorSpanTolerance_ns = 100'000'000;  // 0.1 s
 // (`groundtruth` may be empty; its row k is line k + 2 of its file).
 void CheckGroundTruthInImuSpan(const ImuStream& imu, const std::string& imu_path,
                                const std::vector<NavState>& groundtruth, const std::string& groundtruth_path);
-// InputError "FILE:LINE: ..." unless the camera time `t_ns`, read at `file`:`line`, lies inside the IMU's time
-// span (no tolerance: a frame needs IMU samples on both sides to be tied to the motion).
+// InputError "FILE:LINE: ..." unless the camera time `t_ns`, read at `file`:`line`, lies inside the IMU's
+// time span (no tolerance: a frame needs IMU samples on both sides to be tied to the motion).
 void CheckCameraTimeInImuSpan(const ImuStream& imu, const std::string& imu_path, int64_t t_ns,
                               const std::string& file, int line);
 
@@ -91,7 +91,8 @@ std::string FeaturesCsv(const std::vector<CameraFrame>& frames,
 std::string CameraYaml(const CameraModel& camera);
 // frames.csv: "#timestamp [ns]", one row per camera frame (frames without features included), so that a
 // reader gets the recording's frames at their own times, never reconstructed from a rate.
-std::string FramesCsv(const std::vector<CameraFrame>& frames, const std::string& file = dataset_files::kFrames);
+std::string FramesCsv(const std::vector<CameraFrame>& frames,
+                      const std::string& file = dataset_files::kFrames);
 std::vector<int64_t> ReadFramesCsv(const std::string& path);
 std::vector<int64_t> ReadFramesCsv(const TextFile& file);
 
@@ -121,8 +122,8 @@ std::vector<CameraFrame> ReadFeaturesCsv(const TextFile& file,
 CameraModel ReadCameraYaml(const std::string& path);
 
 // Camera frame times on a grid: t_k = t_first_ns + round(k * 1e9 / rate_hz) for k = 0, 1, ... while
-// t_k <= t_last_ns. The simulator takes its frames at these times (before camera timing faults); readers never
-// reconstruct frames from a rate (frames.csv lists them).
+// t_k <= t_last_ns. The simulator takes its frames at these times (before camera timing faults); readers
+// never reconstruct frames from a rate (frames.csv lists them).
 std::vector<int64_t> CameraFrameTimes(double rate_hz, int64_t t_first_ns, int64_t t_last_ns);
 
 // Writes every file except config.yaml into `dir` (which must exist); errors name the files as inside

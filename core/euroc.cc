@@ -308,7 +308,8 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
     rec.has_camera = rec.has_features = rec.has_groundtruth = true;
     const fs::path list = dir / kMav0 / kCamera / kData;
     if (IsFile(list))
-      rec.images = ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages, check_image_files);
+      rec.images =
+          ReadEurocImageList(ReadTextFile(list.string()), list.parent_path() / kImages, check_image_files);
     for (const CameraImage& image : rec.images)
       CheckCameraTimeInImuSpan(rec.dataset.imu, (dir / dataset_files::kImu).string(), image.t_ns,
                                image.list_path, image.list_line);
@@ -326,10 +327,10 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
   d.imu = ReadImuCsv(imu_file);
   // Timestamps never decrease (ReadImuCsv): the stream spans no time when the last equals the first.
   if (d.imu.back().t_ns == d.imu.front().t_ns)
-    throw InputError(Located(imu_file.path, FirstDataLine(imu_file.text),
-                             std::to_string(d.imu.size()) + (d.imu.size() == 1 ? " sample" : " samples, all") +
-                                 " at timestamp " + std::to_string(d.imu.front().t_ns) +
-                                 ": an IMU stream needs at least two distinct timestamps"));
+    throw InputError(Located(
+        imu_file.path, FirstDataLine(imu_file.text),
+        std::to_string(d.imu.size()) + (d.imu.size() == 1 ? " sample" : " samples, all") + " at timestamp " +
+            std::to_string(d.imu.front().t_ns) + ": an IMU stream needs at least two distinct timestamps"));
   if (IsFile(imu_dir / kSensor))
     rec.imu_sensor = ReadEurocImuSensorYaml(ReadTextFile((imu_dir / kSensor).string(), kMaxSensorYamlBytes));
   const fs::path cam_dir = mav0 / kCamera;
@@ -339,7 +340,8 @@ Recording ReadRecording(const fs::path& dir, bool check_image_files) {
     const Eigen::Isometry3d T_IC = rec.imu_sensor.T_BS.inverse() * d.camera.T_BC_iso();
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) d.camera.T_BC[4 * r + c] = T_IC.matrix()(r, c);
-    rec.images = ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages, check_image_files);
+    rec.images =
+        ReadEurocImageList(ReadTextFile((cam_dir / kData).string()), cam_dir / kImages, check_image_files);
     rec.has_camera = true;
   }
   const fs::path gt = mav0 / kGroundTruth / kData;

@@ -12,7 +12,8 @@ std::string MeshObj(const TriangleMesh& mesh) {
   for (const Eigen::Vector3d& v : mesh.vertices_W)
     s += "v " + FormatDouble(v.x()) + " " + FormatDouble(v.y()) + " " + FormatDouble(v.z()) + "\n";
   for (const auto& t : mesh.triangles)
-    s += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
+    s += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) +
+         "\n";
   return s;
 }
 

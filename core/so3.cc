@@ -27,7 +27,8 @@ Eigen::Matrix3d RightJacobian(const Eigen::Vector3d& phi) {
   const Eigen::Matrix3d K = Skew(phi);
   if (theta < 1e-6) return Eigen::Matrix3d::Identity() - 0.5 * K + K * K / 6.0;
   const double t2 = theta * theta;
-  return Eigen::Matrix3d::Identity() - (1.0 - std::cos(theta)) / t2 * K + (theta - std::sin(theta)) / (t2 * theta) * K * K;
+  return Eigen::Matrix3d::Identity() - (1.0 - std::cos(theta)) / t2 * K +
+         (theta - std::sin(theta)) / (t2 * theta) * K * K;
 }
 
 Eigen::Matrix3d RightJacobianInverse(const Eigen::Vector3d& phi) {
@@ -41,7 +42,9 @@ Eigen::Matrix3d RightJacobianInverse(const Eigen::Vector3d& phi) {
 
 double YawOf(const Eigen::Matrix3d& R) { return std::atan2(R(1, 0), R(0, 0)); }
 
-Eigen::Matrix3d RotZ(double yaw) { return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+Eigen::Matrix3d RotZ(double yaw) {
+  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
 
 double AngleOf(const Eigen::Quaterniond& q) { return LogQ(q).norm(); }
 

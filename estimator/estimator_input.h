@@ -70,13 +70,14 @@ struct EstimatorResult {
   // One per trajectory row when options.pose_covariance (else empty): the pose's covariance in its tangent
   // [delta p_W, delta theta_B] (pose_covariance.h); rows whose covariance could not be computed are NaN.
   std::vector<Eigen::Matrix<double, 6, 6>> pose_covariances;
-  double initialized_at_s = std::numeric_limits<double>::quiet_NaN();  // first successful init, s after the first IMU sample
-  int resets = 0;                    // failure-detection resets (each followed by re-initialization)
-  int stops = 0;                     // failure-detection stops (1 when a failure ended the run, else 0)
+  double initialized_at_s =
+      std::numeric_limits<double>::quiet_NaN();  // first successful init, s after the first IMU sample
+  int resets = 0;  // failure-detection resets (each followed by re-initialization)
+  int stops = 0;   // failure-detection stops (1 when a failure ended the run, else 0)
   std::map<std::string, int> failure_checks;  // resets + stops by the check that fired (Estimator)
-  int frames = 0;                    // camera frames processed
-  int keyframes = 0;                 // frames kept as keyframes (oldest marginalized)
-  int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time
+  int frames = 0;                             // camera frames processed
+  int keyframes = 0;                          // frames kept as keyframes (oldest marginalized)
+  int marginalization_failures = 0;           // failed marginalizations: the prior was dropped each time
   EstimatorTiming timing;
   MitigationStats mitigation;
 };

@@ -9,7 +9,8 @@ namespace {
 
 // The errors of `reprojection` by age, over the bins whose lower edges are `bins` (the last bin open; ages
 // below the first edge are in no bin).
-nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reprojection, const std::vector<int>& bins) {
+nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reprojection,
+                               const std::vector<int>& bins) {
   std::vector<std::vector<double>> errors_px(bins.size());
   for (std::size_t i = 0; i < reprojection.errors_px.size(); ++i)
     if (const std::optional<std::size_t> bin = frontend::BinOf(bins, reprojection.ages_frames[i]))
@@ -25,11 +26,13 @@ nlohmann::json ErrorsByAgeJson(const frontend::ReprojectionEvaluation& reproject
 
 }  // namespace
 
-nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames, const frontend::TrackerStats& stats,
+nlohmann::json FrontendMetricsJson(const std::vector<CameraFrame>& frames,
+                                   const frontend::TrackerStats& stats,
                                    const frontend::FrontendEvaluationOptions& options,
                                    const std::optional<frontend::ReprojectionEvaluation>& reprojection) {
   const std::vector<int> lengths = frontend::TrackLengths(frames);
-  const frontend::TrackLengthSummary summary = frontend::SummarizeTrackLengths(lengths, options.track_length_bins);
+  const frontend::TrackLengthSummary summary =
+      frontend::SummarizeTrackLengths(lengths, options.track_length_bins);
   int64_t observations = 0;
   for (const CameraFrame& frame : frames) observations += static_cast<int64_t>(frame.features.size());
 

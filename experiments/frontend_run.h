@@ -32,7 +32,8 @@ FrontendRunResult TrackSimulation(const RunConfig& config, Dataset* dataset);
 
 // Tracks `recording`'s images (InputError when it has none); replaces recording->dataset.frames. `dir` is the
 // dataset directory the recording was read from (where scene.obj may sit).
-FrontendRunResult TrackRecording(const RunConfig& config, const std::filesystem::path& dir, Recording* recording);
+FrontendRunResult TrackRecording(const RunConfig& config, const std::filesystem::path& dir,
+                                 Recording* recording);
 
 // scene.obj of a dataset directory: in `dir`, or beside its mav0/ when `dir` is mav0 itself.
 std::optional<TriangleMesh> FindSceneMesh(const std::filesystem::path& dir);

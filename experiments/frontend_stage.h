@@ -28,12 +28,14 @@ struct TrackedFeatures {
 
 // Tracks `count` images given in time order by `image_at(i)` (timestamp, 8-bit grayscale image of the
 // camera's size: InputError otherwise, with `describe(i)` naming the image).
-TrackedFeatures TrackImages(std::size_t count, const std::function<std::pair<int64_t, cv::Mat>(std::size_t)>& image_at,
-                            const std::function<std::string(std::size_t)>& describe, const CameraModel& camera,
-                            const frontend::FeatureTrackerOptions& options);
+TrackedFeatures TrackImages(std::size_t count,
+                            const std::function<std::pair<int64_t, cv::Mat>(std::size_t)>& image_at,
+                            const std::function<std::string(std::size_t)>& describe,
+                            const CameraModel& camera, const frontend::FeatureTrackerOptions& options);
 
 // Reads and tracks image files (cam0/data.csv rows; any format OpenCV reads, converted to 8-bit grayscale).
-// A missing or unreadable file or one of another size than the camera's: InputError "LIST:LINE: PATH: reason".
+// A missing or unreadable file or one of another size than the camera's: InputError "LIST:LINE: PATH:
+// reason".
 TrackedFeatures TrackImageFiles(const std::vector<CameraImage>& images, const CameraModel& camera,
                                 const frontend::FeatureTrackerOptions& options);
 

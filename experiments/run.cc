@@ -32,8 +32,8 @@ double SecondsSince(Clock::time_point start) {
 // The recording a run starts from, and what is known about it.
 struct RunData {
   Dataset dataset;
-  bool with_glitches = false;  // dataset.glitches is the truth (simulated, or glitches.csv present)
-  bool with_clean = false;     // dataset.imu_clean is the glitch-free stream
+  bool with_glitches = false;    // dataset.glitches is the truth (simulated, or glitches.csv present)
+  bool with_clean = false;       // dataset.imu_clean is the glitch-free stream
   bool with_groundtruth = true;  // dataset.groundtruth is known (else the run is not evaluated)
   double duration_s = 0.0;
   std::optional<FrontendRunResult> frontend;  // when the tracker made the feature tracks
@@ -57,9 +57,10 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
   // A vigil dataset (with or without mav0/ images) or a EuRoC folder (core/euroc.h).
   Recording recording = ReadRecording(options.dataset_dir);
   if (!recording.has_camera)
-    throw InputError(options.dataset_dir.string() +
-                     ": IMU only (no camera.yaml, no mav0/cam0/): vigil run needs a camera and its feature tracks "
-                     "(vigil clean works on IMU-only datasets)");
+    throw InputError(
+        options.dataset_dir.string() +
+        ": IMU only (no camera.yaml, no mav0/cam0/): vigil run needs a camera and its feature tracks "
+        "(vigil clean works on IMU-only datasets)");
   // Tracks from the images when asked for, or when the recording has images but no features.csv.
   if (config.frontend.features == frontend::FeatureSource::kTracked ||
       (!recording.has_features && !recording.images.empty()))
@@ -132,8 +133,8 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   const auto templates = ResolveTemplates(config, options.templates, reference_ptr);
   summary.wall.templates_s = SecondsSince(t);
   t = Clock::now();
-  DetectionStage detection = RunDetection(config, data.dataset, templates.get(), data.with_glitches,
-                                          data.with_clean, reference_ptr);
+  DetectionStage detection =
+      RunDetection(config, data.dataset, templates.get(), data.with_glitches, data.with_clean, reference_ptr);
   summary.wall.detect_s = SecondsSince(t);
 
   // What the figures draw, taken before the cleaned stream moves into the estimator.

@@ -6,8 +6,8 @@
 
 #include "core/error.h"
 #include "detectors/detector.h"
-#include "sim/imu_presets.h"
 #include "experiments/external_command.h"
+#include "sim/imu_presets.h"
 
 namespace vigil::experiments {
 
@@ -102,9 +102,9 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
-  for (const std::string& file : {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
-                                  config.detector.dtw.templates_file, config.sim.imu.recording,
-                                  config.detector.calibration_dataset})
+  for (const std::string& file :
+       {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
+        config.detector.dtw.templates_file, config.sim.imu.recording, config.detector.calibration_dataset})
     if (!file.empty()) inputs.emplace_back(file);
   return inputs;
 }

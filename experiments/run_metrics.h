@@ -31,8 +31,8 @@ struct RunSummary {
 };
 
 // status "failed" with result.failure_reason when !result.ok or the ATE is not finite, "diverged" (with the
-// error and the bound as failure_reason) when evaluation.diverged, else "ok"; the evaluation describes what the
-// estimator produced (possibly nothing); `detection` is the "detection" object (detection_stage.h).
+// error and the bound as failure_reason) when evaluation.diverged, else "ok"; the evaluation describes what
+// the estimator produced (possibly nothing); `detection` is the "detection" object (detection_stage.h).
 nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::EstimatorResult& result,
                               const evaluation::TrajectoryEvaluation& evaluation,
                               const nlohmann::json& detection);

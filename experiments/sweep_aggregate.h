@@ -37,8 +37,8 @@ struct CellResult {
   std::size_t ok() const { return runs - failed - diverged - missing; }
   double PooledReTrans(std::size_t d) const;  // NaN without segments
   double PooledReYaw(std::size_t d) const;
-  double Precision() const;  // NaN when nothing was flagged
-  double Recall() const;     // NaN when nothing was glitched
+  double Precision() const;          // NaN when nothing was flagged
+  double Recall() const;             // NaN when nothing was glitched
   double FalsePositiveRate() const;  // flagged clean samples / clean samples; NaN without clean samples
   void Merge(const CellResult& other);
 };

@@ -51,7 +51,7 @@ struct SweepRunOptions {
   bool force = false;   // start over in a non-empty `dir`
   std::FILE* progress = nullptr;
   TableWriter write_tables;  // empty: no tables (results.csv and timing.csv only)
-  SweepShard shard;  // the whole sweep by default
+  SweepShard shard;          // the whole sweep by default
 };
 
 // The template library of every cell that needs one (null for the others), in cell order.

@@ -66,8 +66,8 @@ std::optional<CameraFrame> FeatureTracker::Track(const cv::Mat& image, int64_t t
   std::vector<cv::Mat> pyramid;
   const cv::Size window(options_.klt_window_px, options_.klt_window_px);
   // (copied, never sharing the caller's pixels, which it may reuse for its next image)
-  cv::buildOpticalFlowPyramid(gray, pyramid, window, options_.klt_pyramid_levels, true, cv::BORDER_REFLECT_101,
-                              cv::BORDER_CONSTANT, false);
+  cv::buildOpticalFlowPyramid(gray, pyramid, window, options_.klt_pyramid_levels, true,
+                              cv::BORDER_REFLECT_101, cv::BORDER_CONSTANT, false);
   if (!previous_pyramid_.empty() && !tracks_.empty()) {
     TrackIntoImage(pyramid);
     if (options_.refine_tracks && options_.subpixel_window_px > 0) {
@@ -110,8 +110,8 @@ void FeatureTracker::TrackIntoImage(const std::vector<cv::Mat>& pyramid) {
   std::vector<uchar> status;
   std::vector<float> error;
   const cv::Size window(options_.klt_window_px, options_.klt_window_px);
-  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options_.klt_max_iterations,
-                                  options_.klt_epsilon_px);
+  const cv::TermCriteria criteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
+                                  options_.klt_max_iterations, options_.klt_epsilon_px);
   cv::calcOpticalFlowPyrLK(previous_pyramid_, pyramid, before, after, status, error, window,
                            options_.klt_pyramid_levels, criteria);
   std::vector<uchar> back_status;
@@ -142,7 +142,8 @@ void FeatureTracker::RefineAgainstAnchors(const cv::Mat& image) {
   align.epsilon_px = options_.klt_epsilon_px;
   for (TrackState& track : tracks_) {
     std::optional<AffineWarp> warp;
-    if (track.anchor) warp = AlignAffinePatch(*track.anchor, image, {track.anchor_linear, track.raw_px}, align);
+    if (track.anchor)
+      warp = AlignAffinePatch(*track.anchor, image, {track.anchor_linear, track.raw_px}, align);
     if (warp && cv::norm(warp->centre_px - track.raw_px) <= options_.anchor_max_shift_px &&
         InsideBorder(warp->centre_px)) {
       track.raw_px = warp->centre_px;
@@ -196,10 +197,11 @@ void FeatureTracker::RefineCorners(const cv::Mat& image, std::vector<cv::Point2f
   std::vector<cv::Point2f> refined = *points;
   const cv::Size half(options_.subpixel_window_px, options_.subpixel_window_px);
   cv::cornerSubPix(image, refined, half, cv::Size(-1, -1),
-                   cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, options_.subpixel_iterations,
-                                    options_.subpixel_epsilon_px));
+                   cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS,
+                                    options_.subpixel_iterations, options_.subpixel_epsilon_px));
   for (std::size_t i = 0; i < refined.size(); ++i)
-    if (cv::norm(refined[i] - (*points)[i]) <= max_shift_px && InsideBorder(refined[i])) (*points)[i] = refined[i];
+    if (cv::norm(refined[i] - (*points)[i]) <= max_shift_px && InsideBorder(refined[i]))
+      (*points)[i] = refined[i];
 }
 
 void FeatureTracker::EndAgedTracks() {

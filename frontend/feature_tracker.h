@@ -28,9 +28,9 @@
 // Output pixels are on the undistorted pinhole image with the raw camera's fx, fy, cx, cy.
 //
 // Determinism: every step is a deterministic function of the images. OpenCV's RANSAC (cv::findFundamentalMat
-// with FM_RANSAC) draws its samples from a generator it seeds itself with a constant on every call, so it does
-// not depend on cv::theRNG() or on earlier calls; parallel loops inside OpenCV split work over independent
-// pixels or points. The same images in the same order give identical output (tests/frontend).
+// with FM_RANSAC) draws its samples from a generator it seeds itself with a constant on every call, so it
+// does not depend on cv::theRNG() or on earlier calls; parallel loops inside OpenCV split work over
+// independent pixels or points. The same images in the same order give identical output (tests/frontend).
 #pragma once
 
 #include <cstdint>
@@ -54,21 +54,21 @@ struct TrackerStats {
   int64_t images = 0;
   int64_t published_frames = 0;
   int64_t tracks_created = 0;
-  int64_t klt_failures = 0;       // lost by Lucas-Kanade, the image border or the backward check
-  int64_t ransac_outliers = 0;    // dropped by the fundamental-matrix RANSAC
-  int64_t spacing_drops = 0;      // dropped as too close to a longer track
+  int64_t klt_failures = 0;         // lost by Lucas-Kanade, the image border or the backward check
+  int64_t ransac_outliers = 0;      // dropped by the fundamental-matrix RANSAC
+  int64_t spacing_drops = 0;        // dropped as too close to a longer track
   int64_t outside_undistorted = 0;  // dropped because the undistorted pixel left the image
-  int64_t aged_out = 0;           // ended after max_track_length published frames
-  int64_t anchor_refined = 0;     // anchor refinements applied
-  int64_t anchor_rejected = 0;    // anchor refinements that failed or moved a point too far
+  int64_t aged_out = 0;             // ended after max_track_length published frames
+  int64_t anchor_refined = 0;       // anchor refinements applied
+  int64_t anchor_rejected = 0;      // anchor refinements that failed or moved a point too far
 };
 
 class FeatureTracker {
  public:
   FeatureTracker(const FeatureTrackerOptions& options, const CameraModel& camera);
 
-  // Feeds the next image (8-bit, one channel, of the camera's size; timestamps strictly increasing). Returns the
-  // frame's observations (ordered by track id) when the frame is published, nothing otherwise. Throws
+  // Feeds the next image (8-bit, one channel, of the camera's size; timestamps strictly increasing). Returns
+  // the frame's observations (ordered by track id) when the frame is published, nothing otherwise. Throws
   // std::invalid_argument on a wrong image type or size or a timestamp that does not increase.
   std::optional<CameraFrame> Track(const cv::Mat& image, int64_t t_ns);
 
@@ -78,9 +78,9 @@ class FeatureTracker {
  private:
   struct TrackState {
     int id = 0;
-    cv::Point2f raw_px;            // in the current image
-    cv::Point2f undistorted_px;    // at the last published frame (then: now)
-    int length = 0;                // published frames the track was seen in
+    cv::Point2f raw_px;          // in the current image
+    cv::Point2f undistorted_px;  // at the last published frame (then: now)
+    int length = 0;              // published frames the track was seen in
     // anchor_refinement: the patch around the track's point in its anchor image (none when the point was too
     // close to the border or the patch had too little texture: then the next image tries again), that image's
     // index (stats_.images then) and the warp's linear part, anchor -> current image.

@@ -55,8 +55,8 @@ struct TrackLengthSummary {
   std::vector<HistogramBin> histogram;
 };
 
-// The bin of `value` among bins with lower edges `bins` (increasing; the last bin is open): the last bin whose
-// lower edge is <= value, or nothing when value is below the first edge.
+// The bin of `value` among bins with lower edges `bins` (increasing; the last bin is open): the last bin
+// whose lower edge is <= value, or nothing when value is below the first edge.
 std::optional<std::size_t> BinOf(const std::vector<int>& bins, int value);
 
 // Lengths of every track id over `frames`, in the order of first appearance.
@@ -66,13 +66,13 @@ std::vector<int> TrackLengths(const std::vector<CameraFrame>& frames);
 TrackLengthSummary SummarizeTrackLengths(const std::vector<int>& lengths, const std::vector<int>& bins);
 
 struct ReprojectionEvaluation {
-  std::vector<double> errors_px;    // one per evaluated observation, in frame then feature order
-  std::vector<int> ages_frames;     // beside errors_px: frames since the track's first observation (>= 1)
-  int64_t observations = 0;         // every observation
-  int64_t first_observations = 0;   // observations that start a track (not evaluated)
-  int64_t without_truth = 0;        // later observations whose truth is unknown
-  int64_t outliers = 0;             // evaluated observations with an error > threshold
-  double outlier_ratio = 0.0;       // outliers / evaluated (0 when none was evaluated)
+  std::vector<double> errors_px;   // one per evaluated observation, in frame then feature order
+  std::vector<int> ages_frames;    // beside errors_px: frames since the track's first observation (>= 1)
+  int64_t observations = 0;        // every observation
+  int64_t first_observations = 0;  // observations that start a track (not evaluated)
+  int64_t without_truth = 0;       // later observations whose truth is unknown
+  int64_t outliers = 0;            // evaluated observations with an error > threshold
+  double outlier_ratio = 0.0;      // outliers / evaluated (0 when none was evaluated)
 };
 
 // `truth` has the shape of `frames` (ComputeTruePixels). Throws std::invalid_argument when it does not.

@@ -26,7 +26,8 @@ struct PinholeIntrinsics {
 // The true camera pose T_WC at a frame time; nothing when unknown (outside the ground truth).
 using CameraPoseAt = std::function<std::optional<Eigen::Isometry3d>(int64_t t_ns)>;
 // Distance along the unit ray from origin_W in direction dir_W to the first surface hit; nothing on a miss.
-using RayCast = std::function<std::optional<double>(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W)>;
+using RayCast =
+    std::function<std::optional<double>(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W)>;
 
 // truth[f][i] is the true pixel of frames[f].features[i], or nothing when it cannot be known (the first
 // observation's ray misses the scene, a pose is unknown, or the point is behind the camera).

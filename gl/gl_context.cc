@@ -114,7 +114,8 @@ std::vector<float> GlContext::ReadDepth() {
   std::vector<float> depth(bottom_first.size());
   for (int y = 0; y < height_; ++y) {
     std::memcpy(depth.data() + static_cast<std::size_t>(y) * width_,
-                bottom_first.data() + static_cast<std::size_t>(height_ - 1 - y) * width_, sizeof(float) * width_);
+                bottom_first.data() + static_cast<std::size_t>(height_ - 1 - y) * width_,
+                sizeof(float) * width_);
   }
   return depth;
 }

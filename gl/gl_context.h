@@ -3,9 +3,9 @@
 //
 // One context serves any number of frames of any size: BeginFrame() (re)creates the framebuffer objects for
 // the size, EndFrame() resolves the samples (anti-aliasing) and reads the pixels back; ReadDepth() reads the
-// depth buffer of the frame. The context is current on the thread that created it and must only be used there.
-// Everything drawn between BeginFrame and EndFrame uses the fixed-function pipeline of the compatibility
-// profile. Used by the figures (plots/) and by the simulator's camera images (sim/).
+// depth buffer of the frame. The context is current on the thread that created it and must only be used
+// there. Everything drawn between BeginFrame and EndFrame uses the fixed-function pipeline of the
+// compatibility profile. Used by the figures (plots/) and by the simulator's camera images (sim/).
 #pragma once
 
 #include <cstdint>

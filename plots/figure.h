@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "gl/gl_context.h"
 #include "plots/axes.h"
 #include "plots/axes3d.h"
-#include "gl/gl_context.h"
 #include "plots/image.h"
 #include "plots/text.h"
 

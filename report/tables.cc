@@ -87,7 +87,8 @@ std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiment
        std::to_string(diverged) + " diverged, " + std::to_string(failed) + " failed, " +
        std::to_string(agg.missing) + " missing.\n\n";
   s += "Errors are over the runs that finished: ok and diverged (an ATE RMSE beyond the divergence bound, "
-       "evaluation.divergence; counted in the diverged column), not failed ones. Relative errors are pooled over every sub-trajectory of every "
+       "evaluation.divergence; counted in the diverged column), not failed ones. Relative errors are pooled "
+       "over every sub-trajectory of every "
        "run "
        "(a run's mean weighted by its number of segments). Paper values (Long et al., IFAC 2020) in "
        "parentheses where the row and column names match.\n\n";
@@ -119,9 +120,9 @@ std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiment
       const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(c.ate_rmse_m);
       s += "| " + agg.groups[g] + " | " + agg.methods[m] + " | " + std::to_string(c.runs) + " | " +
            std::to_string(c.ok()) + " | " + std::to_string(c.diverged) + " | " + std::to_string(c.failed) +
-           " | " + std::to_string(c.missing) +
-           " | " + FormatCell(st.mean) + " | " + FormatCell(st.std) + " | " + FormatCell(st.median) + " | " + FormatCell(st.min) + " | " +
-           FormatCell(st.max) + " | " + FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " | " +
+           " | " + std::to_string(c.missing) + " | " + FormatCell(st.mean) + " | " + FormatCell(st.std) +
+           " | " + FormatCell(st.median) + " | " + FormatCell(st.min) + " | " + FormatCell(st.max) + " | " +
+           FormatCell(c.Precision()) + " | " + FormatCell(c.Recall()) + " | " +
            FormatCell(c.FalsePositiveRate()) + " |\n";
     }
   }
@@ -133,8 +134,8 @@ std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiment
     for (std::size_t d = 0; d < agg.distances_m.size(); ++d) {
       const evaluation::ErrorStatistics st = evaluation::ComputeStatistics(pooled.re_trans_run_means[d]);
       s += "| " + agg.methods[m] + " | " + FormatDouble(agg.distances_m[d]) + " m | " +
-           FormatDouble(pooled.re_n[d]) + " | " + FormatCell(pooled.PooledReTrans(d)) + " | " + FormatCell(st.std) + " | " +
-           FormatCell(st.median) + " |\n";
+           FormatDouble(pooled.re_n[d]) + " | " + FormatCell(pooled.PooledReTrans(d)) + " | " +
+           FormatCell(st.std) + " | " + FormatCell(st.median) + " |\n";
     }
   }
   bool any_failure = false;

@@ -89,7 +89,8 @@ struct TimingFaultOptions {
   void Visit(V& v) {
     using config::Bounds;
     // At most half: beyond, what is left is no longer an IMU stream a run can read.
-    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped", Bounds::Closed(0.0, 0.5));
+    v.Field("drop_rate", drop_rate, "probability per IMU sample that it is dropped",
+            Bounds::Closed(0.0, 0.5));
     v.Field("duplicate_rate", duplicate_rate,
             "probability per IMU sample that it is stamped with the previous sample's timestamp",
             Bounds::Closed(0.0, 0.5));

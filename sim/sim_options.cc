@@ -17,7 +17,8 @@ constexpr double kMinDuration_s = 0.5;
 
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
   if (!(options.duration_s >= kMinDuration_s))
-    throw InputError(origin + ": duration_s: must be at least 0.5 s (0, to the end of the trajectory, needs " +
+    throw InputError(origin +
+                     ": duration_s: must be at least 0.5 s (0, to the end of the trajectory, needs " +
                      "trajectory.type waypoints or recording)");
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);

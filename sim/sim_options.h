@@ -165,8 +165,8 @@ enum class ImuPreset { kNone, kAdis16448, kBmi088, kMpu6050 };
 
 struct ImuOptions {
   ImuSource source = ImuSource::kSimulated;
-  std::string recording;             // for source recording: a EuRoC folder (sim/semi_real.h)
-  double recording_start_s = 0.0;    // semi-real window start, from the recording's first ground-truth row
+  std::string recording;           // for source recording: a EuRoC folder (sim/semi_real.h)
+  double recording_start_s = 0.0;  // semi-real window start, from the recording's first ground-truth row
   double rate_hz = 200.0;
   ImuPreset preset = ImuPreset::kNone;
   ImuNoiseOptions noise;
@@ -261,8 +261,8 @@ struct SimOptions {
 };
 
 // Makes a relative trajectory.waypoints_file, trajectory.recording or imu.recording absolute, relative to
-// `base_dir` (the config file's directory for paths read from a file, the working directory for --set values),
-// so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
+// `base_dir` (the config file's directory for paths read from a file, the working directory for --set
+// values), so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
 // duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the

@@ -3,9 +3,10 @@
 // Simulate() chains the stages: motion model -> IMU + ground truth (imu_synthesizer) -> glitches
 // (glitch_injector) and the other IMU faults (imu_faults.h gives their order) -> landmarks -> feature tracks
 // (camera_simulator). With imu.source recording, the recorded IMU and ground truth replace the first two
-// (a semi-real dataset, sim/semi_real.h). Each random stream derives from (seed, purpose): "imu_noise", "imu_bias", "glitch",
-// "glitch_offset", "imu_drop", "imu_duplicate", "imu_jitter", "landmarks", "pixels"; so the same options and
-// seed give the same dataset bit for bit, and e.g. glitch or fault settings never change the IMU noise.
+// (a semi-real dataset, sim/semi_real.h). Each random stream derives from (seed, purpose): "imu_noise",
+// "imu_bias", "glitch", "glitch_offset", "imu_drop", "imu_duplicate", "imu_jitter", "landmarks", "pixels"; so
+// the same options and seed give the same dataset bit for bit, and e.g. glitch or fault settings never change
+// the IMU noise.
 #pragma once
 
 #include <cstdint>

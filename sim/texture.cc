@@ -38,7 +38,8 @@ std::vector<GrayTexture> MakeTextures(int count, int size, uint64_t seed) {
     }
     // A few checkerboard patches.
     for (int k = 0; k < 6; ++k) {
-      const int cell = std::max(2, size / 64) + static_cast<int>(rng.UniformIndex(static_cast<uint64_t>(std::max(2, size / 48))));
+      const int cell = std::max(2, size / 64) +
+                       static_cast<int>(rng.UniformIndex(static_cast<uint64_t>(std::max(2, size / 48))));
       const int side = cell * (4 + 2 * static_cast<int>(rng.UniformIndex(3)));
       const int x0 = static_cast<int>(rng.UniformIndex(static_cast<uint64_t>(size)));
       const int y0 = static_cast<int>(rng.UniformIndex(static_cast<uint64_t>(size)));

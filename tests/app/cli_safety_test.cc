@@ -238,8 +238,9 @@ namespace {
 class EurocCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    config_ = tmp_.File("config.yaml",
-                        "duration_s: 1\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
+    config_ =
+        tmp_.File("config.yaml",
+                  "duration_s: 1\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
     const std::string ds = (tmp_.path() / "ds").string();
     ASSERT_EQ(Vigil(tmp_, "simulate " + config_ + " -o " + ds + " --images").status, 0);
     fs::create_directories(eu_);
@@ -268,7 +269,8 @@ class EurocCli : public ::testing::Test {
 };
 
 TEST_F(EurocCli, RunsAsPublishedWithAndWithoutGroundTruth) {
-  const CliResult with = Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
+  const CliResult with =
+      Vigil(tmp_, "run " + config_ + " --dataset " + eu_.string() + " -o " + out_.string());
   ASSERT_EQ(with.status, 0) << with.err;
   EXPECT_NE(ReadFile(out_ / "metrics.json").find("\"ate\""), std::string::npos);
   EXPECT_TRUE(fs::exists(out_ / "stamped_groundtruth.txt"));
@@ -280,8 +282,8 @@ TEST_F(EurocCli, RunsAsPublishedWithAndWithoutGroundTruth) {
   EXPECT_EQ(init.status, 2);
   EXPECT_NE(init.err.find("groundtruth initialization needs ground truth"), std::string::npos) << init.err;
   // VINS initialization: the estimate is written, the metrics skipped (status from the estimator alone).
-  const CliResult without = Vigil(
-      tmp_, "run " + config_ + " --set estimator.init=vins --dataset " + mav0 + " -o " + out2.string());
+  const CliResult without =
+      Vigil(tmp_, "run " + config_ + " --set estimator.init=vins --dataset " + mav0 + " -o " + out2.string());
   EXPECT_TRUE(without.status == 0 || without.status == 1) << without.err;
   EXPECT_NE(without.err.find("skipped: the dataset has no ground truth"), std::string::npos) << without.err;
   const std::string metrics = ReadFile(out2 / "metrics.json");
@@ -314,7 +316,8 @@ TEST_F(EurocCli, SensorYamlWithoutIntrinsicsIsRefused) {
 TEST_F(EurocCli, ImuOnlyCleansButDoesNotRun) {
   fs::remove_all(eu_ / "mav0" / "cam0");
   ExpectRunRefused("IMU only");
-  const CliResult clean = Vigil(tmp_, "clean " + eu_.string() + " -o " + out_.string() + " --detector hampel");
+  const CliResult clean =
+      Vigil(tmp_, "clean " + eu_.string() + " -o " + out_.string() + " --detector hampel");
   EXPECT_EQ(clean.status, 0) << clean.err;
   EXPECT_TRUE(fs::exists(out_ / "imu.csv"));
 }

@@ -69,7 +69,7 @@ class TrackCli : public ::testing::Test {
 TEST_F(TrackCli, WritesTracksStatisticsAndConfig) {
   const fs::path out = tmp_.path() / "tracks";
   const CliResult r = Vigil(tmp_, "track " + dataset_.string() + " -o " + out.string() +
-                                   " --set frontend.max_features=60 --set frontend.backward_check=true");
+                                      " --set frontend.max_features=60 --set frontend.backward_check=true");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("vigil track: 8 images, 8 frames"), std::string::npos) << r.err;
   const std::vector<CameraFrame> frames = ReadFeaturesCsv((out / "features.csv").string(), {}, nullptr);
@@ -103,16 +103,14 @@ TEST_F(TrackCli, BadImagesAreOneLineErrorsAndNothingIsWritten) {
   };
   const std::vector<Case> cases = {
       {"missing", [&] { fs::remove(Image(3)); }, ":5: "},
-      {"unreadable", [&] { std::ofstream(Image(3)) << "not a png"; }, ":5: " + Image(3).string() + ": not a PNG file"},
+      {"unreadable", [&] { std::ofstream(Image(3)) << "not a png"; },
+       ":5: " + Image(3).string() + ": not a PNG file"},
       // Only 8-bit grayscale is read (docs/safety.md): colour and 16-bit images are refused, not converted.
-      {"rgb",
-       [&] { cv::imwrite(Image(3).string(), cv::Mat(240, 320, CV_8UC3, cv::Scalar(9, 9, 9))); },
+      {"rgb", [&] { cv::imwrite(Image(3).string(), cv::Mat(240, 320, CV_8UC3, cv::Scalar(9, 9, 9))); },
        ":5: " + Image(3).string() + ": RGB PNG: cam0 images must be 8-bit grayscale"},
-      {"16-bit",
-       [&] { cv::imwrite(Image(3).string(), cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))); },
+      {"16-bit", [&] { cv::imwrite(Image(3).string(), cv::Mat(240, 320, CV_16UC1, cv::Scalar(900))); },
        ":5: " + Image(3).string() + ": 16-bit grayscale PNG: cam0 images must be 8-bit grayscale"},
-      {"wrong size",
-       [&] { cv::imwrite(Image(4).string(), cv::Mat(240, 200, CV_8UC1, cv::Scalar(9))); },
+      {"wrong size", [&] { cv::imwrite(Image(4).string(), cv::Mat(240, 200, CV_8UC1, cv::Scalar(9))); },
        ":6: " + Image(4).string() + ": image is 200 x 240, the camera's sensor.yaml declares 320 x 240"},
   };
   for (const Case& c : cases) {

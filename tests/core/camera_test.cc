@@ -28,8 +28,8 @@ TEST(Camera, ProjectsAndNormalizesConsistently) {
   EXPECT_NEAR(uv.x(), 460 * 0.25 + 255, 1e-12);
   EXPECT_NEAR(uv.y(), 460 * -0.125 + 255, 1e-12);
   EXPECT_LT((cam.Normalize(uv) - Eigen::Vector2d(0.25, -0.125)).norm(), 1e-12);
-  EXPECT_FALSE(cam.Project(Eigen::Vector3d(0, 0, -1), &uv));     // behind
-  EXPECT_FALSE(cam.Project(Eigen::Vector3d(10, 0, 1), &uv));     // outside the image
+  EXPECT_FALSE(cam.Project(Eigen::Vector3d(0, 0, -1), &uv));  // behind
+  EXPECT_FALSE(cam.Project(Eigen::Vector3d(10, 0, 1), &uv));  // outside the image
 }
 
 TEST(Camera, RejectsImproperRotation) {

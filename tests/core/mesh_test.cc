@@ -10,7 +10,8 @@ namespace {
 // A unit square on the plane z = 2 (two triangles) and a bigger one behind it at z = 5.
 TriangleMesh TwoSquares() {
   TriangleMesh m;
-  m.vertices_W = {{-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2}, {-9, -9, 5}, {9, -9, 5}, {9, 9, 5}, {-9, 9, 5}};
+  m.vertices_W = {{-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2},
+                  {-9, -9, 5}, {9, -9, 5}, {9, 9, 5}, {-9, 9, 5}};
   m.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
   return m;
 }
@@ -18,10 +19,11 @@ TriangleMesh TwoSquares() {
 TEST(Mesh, RayCastFindsTheFirstHit) {
   const TriangleMesh m = TwoSquares();
   EXPECT_NEAR(*RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.2, 0.3, 1)), 2.0, 1e-12);
-  EXPECT_NEAR(*RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.6, 0, 1)), 5.0, 1e-12);  // misses the front
-  EXPECT_FALSE(RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, -1)));               // behind
-  EXPECT_FALSE(RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 1)));                // beside
-  EXPECT_NEAR(*RayCast(m, Eigen::Vector3d(0, 0, 3), Eigen::Vector3d(0, 0, 1)), 2.0, 1e-12);   // from between
+  EXPECT_NEAR(*RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.6, 0, 1)), 5.0,
+              1e-12);                                                            // misses the front
+  EXPECT_FALSE(RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, -1)));  // behind
+  EXPECT_FALSE(RayCast(m, Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 1)));   // beside
+  EXPECT_NEAR(*RayCast(m, Eigen::Vector3d(0, 0, 3), Eigen::Vector3d(0, 0, 1)), 2.0, 1e-12);  // from between
 }
 
 TEST(Mesh, PixelRayHitProjectsBackToThePixel) {
@@ -46,12 +48,16 @@ TEST(Mesh, ObjRoundTripAndErrors) {
   EXPECT_EQ(back.vertices_W, m.vertices_W);
   EXPECT_EQ(back.triangles, m.triangles);
   // Quads are fanned, i/t/n indices accepted, other lines ignored.
-  const TriangleMesh quad =
-      ReadMeshObj(TextFile{"q.obj", "mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 4/1\n"});
+  const TriangleMesh quad = ReadMeshObj(
+      TextFile{"q.obj", "mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1 4/1\n"});
   EXPECT_EQ(quad.triangles.size(), 2u);
-  EXPECT_EQ(vigil::testing::InputErrorOf([] { ReadMeshObj(TextFile{"s.obj", "v 0 0 0\nv 1 0\n"}); }),
+  EXPECT_EQ(vigil::testing::InputErrorOf([] {
+              ReadMeshObj(TextFile{"s.obj", "v 0 0 0\nv 1 0\n"});
+            }),
             "s.obj:2: v: expected 3 finite coordinates");
-  EXPECT_EQ(vigil::testing::InputErrorOf([] { ReadMeshObj(TextFile{"s.obj", "v 0 0 0\n\nf 1 2 3\n"}); }),
+  EXPECT_EQ(vigil::testing::InputErrorOf([] {
+              ReadMeshObj(TextFile{"s.obj", "v 0 0 0\n\nf 1 2 3\n"});
+            }),
             "s.obj:3: f: vertex index 2 is out of range (1 vertices)");
 }
 

@@ -9,9 +9,10 @@ namespace {
 
 TEST(So3, ExpAndLogAreInverse) {
   for (const Eigen::Vector3d& phi : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(1e-10, 0, 2e-10),
-                                    Eigen::Vector3d(0, 3.0, 0), Eigen::Vector3d(-1.2, 0.4, 2.0)}) {
+                                     Eigen::Vector3d(0, 3.0, 0), Eigen::Vector3d(-1.2, 0.4, 2.0)}) {
     EXPECT_LT((LogQ(ExpQ(phi)) - phi).norm(), 1e-12) << phi.transpose();
-    const Eigen::AngleAxisd aa(phi.norm(), phi.norm() > 0 ? Eigen::Vector3d(phi.normalized()) : Eigen::Vector3d::UnitX());
+    const Eigen::AngleAxisd aa(phi.norm(),
+                               phi.norm() > 0 ? Eigen::Vector3d(phi.normalized()) : Eigen::Vector3d::UnitX());
     EXPECT_LT(ExpQ(phi).angularDistance(Eigen::Quaterniond(aa)), 1e-12);
   }
 }
@@ -36,7 +37,8 @@ TEST(So3, SkewIsTheCrossProduct) {
 
 TEST(So3, YawOfRotZ) {
   EXPECT_NEAR(YawOf(RotZ(2.5)), 2.5, 1e-12);
-  EXPECT_NEAR(YawOf(RotZ(-0.7) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY()).toRotationMatrix()), -0.7, 1e-12);
+  EXPECT_NEAR(YawOf(RotZ(-0.7) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY()).toRotationMatrix()), -0.7,
+              1e-12);
 }
 
 }  // namespace

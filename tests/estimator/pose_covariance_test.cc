@@ -99,7 +99,7 @@ TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
   }
   const evaluation::NeesStatistics nees =
       evaluation::ComputeNees(gt, result.trajectory, result.pose_covariances,
-                               evaluation::GaugeAlignment(gt, result.trajectory, result.pose_covariances));
+                              evaluation::GaugeAlignment(gt, result.trajectory, result.pose_covariances));
   std::printf("NEES position %.2f orientation %.2f over %lld poses, covariance %.3f s of optimize %.3f s\n",
               nees.position.mean, nees.orientation.mean, static_cast<long long>(nees.position.n),
               result.timing.covariance_s, result.timing.optimize_s);

@@ -118,8 +118,8 @@ TEST(FrontendStage, EvaluatesTracksAgainstTheScene) {
   EXPECT_LT(j["reprojection"]["error_px"]["rmse"].get<double>(), 0.3);
   EXPECT_EQ(j["track_length_frames"]["histogram"].back()["to"], nullptr);
   EXPECT_EQ(j["track_length_frames"]["max"], 10);
-  // The errors by age partition the evaluated observations over the default bins (1, 2, 3-4, 5-9, 10-19, ...):
-  // tracks of 10 frames have ages 1 to 9, so the bins from 10 on are empty.
+  // The errors by age partition the evaluated observations over the default bins (1, 2, 3-4, 5-9, 10-19,
+  // ...): tracks of 10 frames have ages 1 to 9, so the bins from 10 on are empty.
   const nlohmann::json& by_age = j["reprojection"]["error_by_age_px"];
   ASSERT_EQ(by_age.size(), 8u);
   int64_t binned = 0;

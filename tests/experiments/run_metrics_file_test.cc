@@ -45,18 +45,21 @@ TEST(RunMetricsFile, AnotherRunsMetricsAreRefused) {
 
 TEST(RunMetricsFile, CorruptValuesAreRefusedWithTheirLine) {
   TempDir tmp;
-  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "-1")).find(":4: ate.trans_m.rmse: must be in [0, 1e+09]"),
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "-1"))
+                .find(":4: ate.trans_m.rmse: must be in [0, 1e+09]"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "1e308")).find("ate.trans_m.rmse"), std::string::npos);
-  EXPECT_NE(
-      ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "\"x\"")).find("ate.trans_m.rmse: expected a number, got string"),
-      std::string::npos);
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "1e308")).find("ate.trans_m.rmse"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "\"x\""))
+                .find("ate.trans_m.rmse: expected a number, got string"),
+            std::string::npos);
   EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "0.05", "[1]")).find("expected a number, got array"),
             std::string::npos);
   EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "\"flagged_samples\": 4", "\"flagged_samples\": 1.5"))
                 .find(":6: detection.flagged_samples"),
             std::string::npos);
-  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "\"ok\"", "\"fine\"")).find(":2: status"), std::string::npos);
+  EXPECT_NE(ErrorOf(tmp, MetricsWith(kGoodMetrics, "\"ok\"", "\"fine\"")).find(":2: status"),
+            std::string::npos);
   EXPECT_NE(ErrorOf(tmp, "[1, 2]").find("(top level): expected a JSON object, got array"), std::string::npos);
   EXPECT_NE(ErrorOf(tmp, "{\"status\": ").find("not valid JSON"), std::string::npos);
 }

@@ -16,11 +16,12 @@ using testing::Apply;
 using testing::MakeTexture;
 using testing::Warp;
 
-// A known affine map M (anchor image pixel -> target image pixel): 6 deg of rotation, 7 % of zoom, some shear.
+// A known affine map M (anchor image pixel -> target image pixel): 6 deg of rotation, 7 % of zoom, some
+// shear.
 cv::Matx33d KnownAffine() {
   const double a = 6.0 * M_PI / 180.0, s = 1.07;
-  return cv::Matx33d(s * std::cos(a), -s * std::sin(a) + 0.03, 12.6, s * std::sin(a), s * std::cos(a), -7.3, 0, 0,
-                     1);
+  return cv::Matx33d(s * std::cos(a), -s * std::sin(a) + 0.03, 12.6, s * std::sin(a), s * std::cos(a), -7.3,
+                     0, 0, 1);
 }
 
 TEST(AffinePatchAligner, RecoversAKnownAffineWarp) {
@@ -31,7 +32,8 @@ TEST(AffinePatchAligner, RecoversAKnownAffineWarp) {
                                 static_cast<float>(M(1, 0)), static_cast<float>(M(1, 1)));
   std::vector<double> errors_px;
   for (int k = 0; k < 40; ++k) {
-    const cv::Point2f anchor(150.0f + 9.37f * static_cast<float>(k), 120.0f + 5.21f * static_cast<float>(k % 7));
+    const cv::Point2f anchor(150.0f + 9.37f * static_cast<float>(k),
+                             120.0f + 5.21f * static_cast<float>(k % 7));
     const std::optional<AffinePatch> patch = MakeAffinePatch(texture, anchor, 10);
     if (!patch) continue;  // too little texture
     const cv::Point2d truth = Apply(M, anchor);

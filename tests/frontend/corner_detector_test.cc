@@ -78,8 +78,7 @@ std::vector<cv::Point2f> PlainShiTomasi(const cv::Mat& image, const cv::Mat& mas
   for (int y = 0; y < image.rows; ++y)
     for (int x = 0; x < image.cols; ++x) {
       const double a = xx.at<double>(y, x), b = xy.at<double>(y, x), c = yy.at<double>(y, x);
-      score.at<float>(y, x) =
-          static_cast<float>(0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b));
+      score.at<float>(y, x) = static_cast<float>(0.5 * (a + c) - std::sqrt(0.25 * (a - c) * (a - c) + b * b));
     }
   double best = 0.0;
   cv::minMaxLoc(score, nullptr, &best, nullptr, nullptr, mask);
@@ -105,9 +104,8 @@ std::vector<cv::Point2f> PlainShiTomasi(const cv::Mat& image, const cv::Mat& mas
   for (const Corner& c : corners) {
     if (static_cast<int>(kept.size()) >= options.max_corners) break;
     const cv::Point2f p(static_cast<float>(c.x), static_cast<float>(c.y));
-    if (std::all_of(kept.begin(), kept.end(), [&](const cv::Point2f& k) {
-          return cv::norm(k - p) >= options.min_distance_px;
-        }))
+    if (std::all_of(kept.begin(), kept.end(),
+                    [&](const cv::Point2f& k) { return cv::norm(k - p) >= options.min_distance_px; }))
       kept.push_back(p);
   }
   return kept;

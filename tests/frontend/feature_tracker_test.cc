@@ -313,10 +313,10 @@ TEST(FeatureTracker, RefinedTracksDriftLess) {
   EXPECT_LT(Quantile(eb.errors_px, 0.9), 0.3);
 }
 
-// Anchor refinement: each tracked point is aligned again, under an affine warp, with the patch its track began
-// with, so the frame-to-frame errors no longer add up. Over 24 frames of rotation and zoom the anchored tracks
-// stay several times closer to the truth than the frame-to-frame ones; re-anchoring every 8 images keeps most
-// of the gain.
+// Anchor refinement: each tracked point is aligned again, under an affine warp, with the patch its track
+// began with, so the frame-to-frame errors no longer add up. Over 24 frames of rotation and zoom the anchored
+// tracks stay several times closer to the truth than the frame-to-frame ones; re-anchoring every 8 images
+// keeps most of the gain.
 TEST(FeatureTracker, AnchoredTracksDriftLess) {
   const PlaneMotion motion;
   const cv::Mat texture = MakeTexture(1280, 1000, 7);

@@ -24,7 +24,8 @@ Eigen::Isometry3d CameraPose(int64_t t_ns) {
   return T_WC;
 }
 
-Eigen::Vector2d Project(const PinholeIntrinsics& k, const Eigen::Isometry3d& T_WC, const Eigen::Vector3d& p_W) {
+Eigen::Vector2d Project(const PinholeIntrinsics& k, const Eigen::Isometry3d& T_WC,
+                        const Eigen::Vector3d& p_W) {
   const Eigen::Vector3d p_C = T_WC.inverse() * p_W;
   return {k.fx * p_C.x() / p_C.z() + k.cx, k.fy * p_C.y() / p_C.z() + k.cy};
 }

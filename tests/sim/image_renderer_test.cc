@@ -79,8 +79,8 @@ TEST(ImageRenderer, HouseVertexProjectsOntoTheWallItBelongsTo) {
   const std::vector<float> depth = renderer.PinholeDepth(T_WB);
   // Points on the y = 0 wall and gable: the house's corner (10, 0, 10) pulled 0.3 m inside the wall, the
   // door's corner and a point below the ridge.
-  for (const Eigen::Vector3d& p_W : {Eigen::Vector3d(9.7, 0, 9.7), Eigen::Vector3d(6.0, 0, 4.0),
-                                    Eigen::Vector3d(5.0, 0, 13.0)}) {
+  for (const Eigen::Vector3d& p_W :
+       {Eigen::Vector3d(9.7, 0, 9.7), Eigen::Vector3d(6.0, 0, 4.0), Eigen::Vector3d(5.0, 0, 13.0)}) {
     Eigen::Vector2d uv;
     ASSERT_TRUE(cam.Project(T_CW * p_W, &uv));
     const int u = static_cast<int>(std::lround(uv.x())), v = static_cast<int>(std::lround(uv.y()));
@@ -179,8 +179,9 @@ TEST(ImageRenderer, SimulateWritesTheEurocLayoutAndTheScene) {
        "camera.cy=59.5", "camera.fx=115", "camera.fy=115", "camera.distortion=[-0.1, 0.01, 0, 0]"});
   const Dataset d = SimulateToDirectory(c.sim, c.seed, config::ToYaml(c), tmp.path() / "ds", false);
   const fs::path ds = tmp.path() / "ds";
-  for (const char* f : {"imu.csv", "features.csv", "scene.obj", "mav0/imu0/data.csv", "mav0/imu0/sensor.yaml",
-                        "mav0/cam0/data.csv", "mav0/cam0/sensor.yaml", "mav0/state_groundtruth_estimate0/data.csv"})
+  for (const char* f :
+       {"imu.csv", "features.csv", "scene.obj", "mav0/imu0/data.csv", "mav0/imu0/sensor.yaml",
+        "mav0/cam0/data.csv", "mav0/cam0/sensor.yaml", "mav0/state_groundtruth_estimate0/data.csv"})
     EXPECT_TRUE(fs::is_regular_file(ds / f)) << f;
   EXPECT_EQ(ReadFile(ds / "mav0/imu0/data.csv"), ReadFile(ds / "imu.csv"));
   const TriangleMesh mesh = ReadMeshObj((ds / "scene.obj").string());

@@ -183,8 +183,9 @@ TEST(SemiReal, CameraTimesOutsideTheImuAreRefusedWithFileAndLine) {
   const fs::path dir =
       WriteEurocExcerpt(tmp.path() / "rec", {excerpt.groundtruth[0].t_ns, after}, excerpt.groundtruth);
   const std::string error = InputErrorOf([&] { Simulate(SemiReal(dir, 3.0), 1); });
-  EXPECT_NE(error.find("cam0/data.csv:3: timestamp " + std::to_string(after) + " is outside the IMU's time span"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("cam0/data.csv:3: timestamp " + std::to_string(after) + " is outside the IMU's time span"),
+      std::string::npos)
       << error;
 }
 
