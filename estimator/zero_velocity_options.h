@@ -21,7 +21,7 @@ namespace vigil::estimator {
 
 struct ZeroVelocityOptions {
   bool update = false;        // zero-velocity factors on stationary intervals of the tracking window
-  bool static_init = false;   // initialize a stationary window from its IMU and hold it still until it moves
+  bool static_init = true;    // initialize a stationary window from its IMU and hold it still until it moves
   double probability = 0.99;  // chi-square quantile of both tests
   double pixel_std_px = 0.5;  // image test: the track noise per axis (0: image test off) [px]
   int min_features = 10;      // image test: fewest features seen in both frames
