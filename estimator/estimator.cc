@@ -117,13 +117,11 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     frame->imu_from_prev = PreintegrateInterval(imu, window_.back()->t_ns, t_ns, prev.b_a, prev.b_g, noise_,
                                                 imu_rate_hz_, imu_variance_scale);
     if (initialized_) Predict(frame.get());
-    if (options_.zero_velocity.update || options_.zero_velocity.static_init) {
+    if (NeedsStationarity())
       frame->stationary = IntervalIsStationary(window_.back()->features_n, features_n, *frame->imu_from_prev,
                                                camera_.fx, options_.zero_velocity);
-      if (frame->stationary) ++stationary_intervals_;
-    }
   }
-  if (holding_still_ && !frame->stationary) holding_still_ = false;
+  holding_still_ = holding_still_ && frame->stationary;
   const int tracked = features_.AddFrame(frame->id, features_n);
   lost_frames_ = tracked < options_.failure.min_tracked_features ? lost_frames_ + 1 : 0;
   window_.push_back(std::move(frame));

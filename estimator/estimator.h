@@ -77,10 +77,6 @@ class Estimator {
   int marginalization_failures() const { return marginalization_failures_; }
   const EstimatorTiming& timing() const { return timing_; }
   const GatingStats& gating() const { return gating_; }
-  // Frame intervals the zero-velocity detector found stationary (counted when it runs).
-  int stationary_intervals() const { return stationary_intervals_; }
-  // Whether the estimator holds a static start still (no motion seen since).
-  bool holding_still() const { return holding_still_; }
   std::optional<int64_t> initialized_at_ns() const { return initialized_at_ns_; }
   // The initializer's last failure reason (empty when it never ran or never failed).
   const std::string& init_failure_reason() const { return init_failure_reason_; }
@@ -96,7 +92,7 @@ class Estimator {
     std::optional<Preintegration> imu_from_prev;
     std::map<int, Eigen::Vector2d> features_n;
     // The interval from the previous window frame stands still (zero_velocity_detector.h); computed only
-    // when options.zero_velocity asks for it.
+    // when NeedsStationarity().
     bool stationary = false;
 
     NavState State() const;
@@ -122,6 +118,12 @@ class Estimator {
   // static start is held.
   void AddZeroVelocityFactors(WindowProblem* w);
   bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
+  // Whether a new frame's interval must be tested for standing still: for the update, and for a static start
+  // (the window before initialization, and while it is held still). The flags are read nowhere else.
+  bool NeedsStationarity() const {
+    return options_.zero_velocity.update ||
+           (options_.zero_velocity.static_init && (!initialized_ || holding_still_));
+  }
   // The zero-velocity terms that involve the oldest frame (for its marginalization); `costs` owns them.
   void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
                                      std::vector<MarginalizationTerm>* terms);
@@ -190,7 +192,6 @@ class Estimator {
   bool initialized_ = false;
   // A static start holds the window still (no triangulation) until the first interval that moves.
   bool holding_still_ = false;
-  int stationary_intervals_ = 0;
   uint64_t next_frame_id_ = 0;
   std::optional<int64_t> initialized_at_ns_;
   std::string failure_reason_;
