@@ -1,13 +1,13 @@
 // vigil: visual-inertial odometry under IMU faults. See README.md and docs/cli.md.
 #include <charconv>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <map>
+#include <optional>
 
 #include <glog/logging.h>
 
+#include "app/cli_main.h"
 #include "app/commands.h"
 #include "app/set_args.h"
 #include "core/error.h"
@@ -87,32 +87,12 @@ int main(int argc, char** argv) {
   AddTablesCommand(root);
   AddRegressCommand(root);
   AddSlurmCommand(root);
-  try {
-    root.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return root.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return root.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return root.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "vigil: error: %s\n", vigil::OneLine(e.what()).c_str());
-    return 2;
-  }
+  if (const std::optional<int> status = ParseCommandLine(root, argc, argv)) return *status;
   for (const CLI::App* cmd : root.get_subcommands()) {
     // Nested subcommands (`vigil plot run`): the action sits on the innermost parsed one.
     while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
     auto it = Actions().find(cmd);
-    if (it == Actions().end()) continue;
-    try {
-      return it->second();
-    } catch (const vigil::InputError& e) {
-      std::fprintf(stderr, "vigil: error: %s\n", e.what());  // already one line
-      return 2;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "vigil: error: %s\n", vigil::OneLine(e.what()).c_str());
-      return 1;
-    }
+    if (it != Actions().end()) return RunReportingErrors(it->second);
   }
   return 0;
 }
