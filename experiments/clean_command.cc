@@ -6,7 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/config.h"
-#include "core/config_section.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/euroc.h"
@@ -16,18 +15,16 @@
 #include "detectors/detector.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/template_library.h"
+#include "experiments/run_config.h"
 
 namespace vigil::experiments {
 namespace {
 
 namespace fs = std::filesystem;
 
-using DetectorSection = config::ConfigSection<detectors::DetectorOptions>;
-DetectorSection MakeDetectorSection() { return {"detector", "glitch detection and mitigation"}; }
-
 // The detector options of the request: defaults, --set overrides, the detector and its template library.
 detectors::DetectorOptions ResolveCleanOptions(const CleanRequest& request) {
-  DetectorSection section = MakeDetectorSection();
+  auto section = DetectorSection();
   config::ApplyOverrides(request.overrides, section);
   detectors::DetectorOptions options = section.options;
   const auto type = config::EnumFromName(request.detector, detectors::DetectorTypeNames());
@@ -120,7 +117,7 @@ void WriteCleanOutput(const CleanRequest& request, const CleanInputs& in,
   WriteFileAtomic(out.path() / dataset_files::kImu,
                   ImuCsv(result.cleaned, (fs::path(request.output) / dataset_files::kImu).string()));
   WriteFileAtomic(out.path() / "detections.csv", detectors::DetectionsCsv(in.raw, result.flagged));
-  DetectorSection section = MakeDetectorSection();
+  auto section = DetectorSection();
   section.options = options;
   WriteFileAtomic(out.path() / "config.yaml", config::ToYaml(section));
   WriteFileAtomic(out.path() / "detection.json", json.dump(2) + "\n");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/config_section.h"
 #include "detectors/detector_options.h"
 #include "estimator/estimator_options.h"
 #include "evaluation/evaluation_options.h"
@@ -17,6 +18,23 @@
 #include "sim/sim_options.h"
 
 namespace vigil::experiments {
+
+// The run config's sections that `vigil clean`, `vigil templates` and `vigil track` also take on their own
+// (their `--set` keys and the config.yaml they write): one key and description each, so that those files
+// merge into a run's config.
+struct SectionName {
+  const char* key;
+  const char* description;
+};
+inline constexpr SectionName kFrontendSection{"frontend",
+                                              "visual front-end: feature tracks from camera images"};
+inline constexpr SectionName kDetectorSection{"detector", "glitch detection and mitigation"};
+inline config::ConfigSection<frontend::FrontendOptions> FrontendSection() {
+  return {kFrontendSection.key, kFrontendSection.description};
+}
+inline config::ConfigSection<detectors::DetectorOptions> DetectorSection() {
+  return {kDetectorSection.key, kDetectorSection.description};
+}
 
 struct RunConfig {
   uint64_t seed = 1;
@@ -30,8 +48,8 @@ struct RunConfig {
   void Visit(V& v) {
     v.Field("seed", seed, "run seed: every random stream derives from (seed, purpose)");
     sim.Visit(v);  // the simulator's sections sit at the top level
-    v.Section("frontend", frontend, "visual front-end: feature tracks from camera images");
-    v.Section("detector", detector, "glitch detection and mitigation");
+    v.Section(kFrontendSection.key, frontend, kFrontendSection.description);
+    v.Section(kDetectorSection.key, detector, kDetectorSection.description);
     v.Section("estimator", estimator, "sliding-window visual-inertial estimator");
     v.Section("evaluation", evaluation, "trajectory evaluation");
   }

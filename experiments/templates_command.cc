@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include "core/config_section.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -11,6 +10,7 @@
 #include "core/output.h"
 #include "detectors/detector_options.h"
 #include "detectors/relative_threshold_detector.h"
+#include "experiments/run_config.h"
 
 namespace vigil::experiments {
 namespace {
@@ -52,7 +52,7 @@ std::string BoundsLines(const TemplatesResult& result) {
 }  // namespace
 
 TemplatesResult BuildTemplateLibraryFile(const TemplatesRequest& request) {
-  config::ConfigSection<detectors::DetectorOptions> section{"detector", "glitch detection and mitigation"};
+  auto section = DetectorSection();
   config::ApplyOverrides(request.overrides, section);
   const detectors::DetectorOptions& options = section.options;
   std::error_code ec;

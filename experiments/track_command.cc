@@ -2,7 +2,6 @@
 
 #include <filesystem>
 
-#include "core/config_section.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/euroc.h"
@@ -11,15 +10,15 @@
 #include "experiments/frontend_metrics.h"
 #include "experiments/frontend_run.h"
 #include "experiments/frontend_stage.h"
+#include "experiments/run_config.h"
 #include "frontend/frontend_options.h"
 
 namespace vigil::experiments {
 namespace {
 
-using FrontendSection = config::ConfigSection<frontend::FrontendOptions>;
-
-FrontendSection ResolveTrackOptions(const std::vector<std::string>& overrides) {
-  FrontendSection section{"frontend", "visual front-end: feature tracks from camera images"};
+config::ConfigSection<frontend::FrontendOptions> ResolveTrackOptions(
+    const std::vector<std::string>& overrides) {
+  auto section = FrontendSection();
   config::ApplyOverrides(overrides, section);
   if (const std::string why = frontend::ValidateEvaluationOptions(section.options.evaluation); !why.empty())
     throw InputError("--set frontend.evaluation." + why);
@@ -42,8 +41,8 @@ std::optional<frontend::ReprojectionEvaluation> EvaluateAgainstScene(const std::
 }  // namespace
 
 TrackResult TrackToDirectory(const TrackRequest& request) {
-  FrontendSection config = ResolveTrackOptions(request.overrides);
-  const frontend::FrontendOptions& options = config.options;
+  auto section = ResolveTrackOptions(request.overrides);
+  const frontend::FrontendOptions& options = section.options;
   // Read and track everything before writing anything.
   const Recording recording = ReadRecording(request.dataset);
   if (!recording.has_camera || recording.images.empty())
@@ -65,7 +64,7 @@ TrackResult TrackToDirectory(const TrackRequest& request) {
   StagedDirectory out(request.output, request.force);
   WriteFileAtomic(out.path() / dataset_files::kFeatures, FeaturesCsv(tracked.frames));
   WriteFileAtomic(out.path() / "frontend.json", result.frontend.dump(2) + "\n");
-  WriteFileAtomic(out.path() / "config.yaml", config::ToYaml(config));
+  WriteFileAtomic(out.path() / "config.yaml", config::ToYaml(section));
   out.Commit();
   return result;
 }
