@@ -38,7 +38,7 @@ SimilarityTransform GaugeAlignment(const Trajectory& gt, const Trajectory& est,
     const Eigen::Matrix3d R =
         gt[m.gt].q_WB.toRotationMatrix() * est[m.est].q_WB.toRotationMatrix().transpose();
     const double yaw = std::atan2(R(1, 0) - R(0, 1), R(0, 0) + R(1, 1));
-    out.R = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    out.R = RotZ(yaw);
     out.t = gt[m.gt].p_W - out.R * est[m.est].p_W;
     return out;
   }

@@ -3,11 +3,9 @@
 // docs/cli.md and the README's command table name in code spans is one that `vigil --help` and
 // `vigil CMD --help` list.
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <memory>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -17,6 +15,8 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+
+#include "tests/app/vigil_cli.h"
 
 namespace vigil {
 namespace {
@@ -165,12 +165,7 @@ std::vector<std::string> BrokenLinks(const fs::path& file, const fs::path& root 
 
 // What `vigil ARGS --help` prints.
 std::string Help(const std::string& args) {
-  const std::string command = std::string(VIGIL_BINARY) + " " + args + " --help 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  std::string out;
-  char buffer[4096];
-  while (pipe && fgets(buffer, sizeof buffer, pipe.get()) != nullptr) out += buffer;
-  return out;
+  return testing::RunShell(std::string(VIGIL_BINARY) + " " + args + " --help 2>&1").out;
 }
 
 // The names of a help's "Subcommands:" section.

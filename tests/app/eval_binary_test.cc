@@ -1,40 +1,20 @@
 // `vigil-eval` is `vigil eval` linked against the evaluation library and core/ only: its dynamic
 // dependencies hold no OpenCV, oneTBB, Ceres, OSMesa or glog, it holds no code of the libraries further down
 // the data flow, and it prints what `vigil eval` prints.
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <regex>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "tests/core/test_util.h"
+#include "tests/app/vigil_cli.h"
 
 namespace vigil::testing {
 namespace {
 
-struct Output {
-  int status = -1;
-  std::string out;
-};
-
-// Runs a shell command; its stdout and exit status.
-Output Shell(const std::string& command) {
-  Output r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof(buf), pipe)) > 0;) r.out.append(buf, n);
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  return r;
-}
-
 // The shared libraries `binary` names directly (readelf -d: NEEDED), e.g. "libyaml-cpp.so.0.7".
 std::set<std::string> NeededLibraries(const std::string& binary) {
-  const Output r = Shell("readelf -d " + binary);
+  const ShellOutput r = RunShell("readelf -d " + binary);
   EXPECT_EQ(r.status, 0) << "readelf failed on " << binary;
   std::set<std::string> needed;
   const std::regex entry(R"(\(NEEDED\)\s+Shared library: \[([^\]]+)\])");
@@ -60,7 +40,7 @@ TEST(VigilEval, NeedsOnlyTheLibrariesOfCore) {
 }
 
 TEST(VigilEval, HoldsNoCodeOfTheLibrariesDownTheDataFlow) {
-  const Output symbols = Shell("nm -C --defined-only " + std::string(VIGIL_EVAL_BINARY));
+  const ShellOutput symbols = RunShell("nm -C --defined-only " + std::string(VIGIL_EVAL_BINARY));
   ASSERT_EQ(symbols.status, 0);
   EXPECT_NE(symbols.out.find("vigil::evaluation::EvaluateTrajectory"), std::string::npos);
   for (const char* ns : {"vigil::sim::", "vigil::frontend::", "vigil::detectors::", "vigil::estimator::",
@@ -71,8 +51,8 @@ TEST(VigilEval, HoldsNoCodeOfTheLibrariesDownTheDataFlow) {
 TEST(VigilEval, PrintsWhatVigilEvalPrints) {
   const std::string files = " " + kData + "rpg_pair_gt.txt " + kData + "rpg_pair_est.txt";
   for (const std::string flags : {"", " --json", " --align se3 --distances 2,4"}) {
-    const Output alone = Shell(std::string(VIGIL_EVAL_BINARY) + files + flags + " 2>/dev/null");
-    const Output sub = Shell(std::string(VIGIL_BINARY) + " eval" + files + flags + " 2>/dev/null");
+    const ShellOutput alone = RunShell(std::string(VIGIL_EVAL_BINARY) + files + flags + " 2>/dev/null");
+    const ShellOutput sub = RunShell(std::string(VIGIL_BINARY) + " eval" + files + flags + " 2>/dev/null");
     EXPECT_EQ(alone.status, 0) << flags;
     EXPECT_EQ(sub.status, 0) << flags;
     EXPECT_FALSE(alone.out.empty()) << flags;
@@ -80,8 +60,8 @@ TEST(VigilEval, PrintsWhatVigilEvalPrints) {
   }
   // Bad input: the same one-line message and exit status 2.
   const std::string bad = files + " --align bogus 2>&1";
-  const Output alone = Shell(std::string(VIGIL_EVAL_BINARY) + bad);
-  const Output sub = Shell(std::string(VIGIL_BINARY) + " eval" + bad);
+  const ShellOutput alone = RunShell(std::string(VIGIL_EVAL_BINARY) + bad);
+  const ShellOutput sub = RunShell(std::string(VIGIL_BINARY) + " eval" + bad);
   EXPECT_EQ(alone.status, 2);
   EXPECT_EQ(sub.status, 2);
   EXPECT_EQ(alone.out, "vigil: error: --align: unknown alignment 'bogus'\n");

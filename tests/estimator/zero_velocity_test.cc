@@ -164,9 +164,9 @@ TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
   ASSERT_FALSE(result.states.empty());
   const NavState& first = result.states.front();
   EXPECT_LT(NsToS(first.t_ns - data.frames.front().t_ns), 1.0);
-  // Position held while still (t < 5 s): the window keeps its first 10 still frames (no keyframe without
-  // parallax) and the newest, chained by no-motion factors of 1 mm std each, so the newest is within about
-  // sqrt(10) mm = 3 mm (one std) of the first; 2 cm is six std.
+  // Position held while still (t < 5 s): the window keeps its first still frames (no keyframe without
+  // parallax: window.size of them, 15) and the newest, chained by no-motion factors of 1 mm std each, so the
+  // newest is within about sqrt(15) mm = 4 mm (one std) of the first; 2 cm is five std.
   double worst_m = 0.0;
   for (const NavState& s : result.states)
     if (NsToS(s.t_ns - data.frames.front().t_ns) < 5.0)
