@@ -4,7 +4,9 @@
 // frame (pose_covariance.h).
 #include <map>
 #include <memory>
+#include <numeric>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "estimator/estimator.h"
@@ -36,15 +38,15 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
     terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
 
   // The depths eliminated: what is left is the information of the window's states.
-  LinearPrior states;
-  if (!Marginalize(anchored_prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold,
-                   &states))
+  SchurComplement states;
+  if (!EliminateDropped(anchored_prior_.get(), terms, dropped,
+                        options_.window.marginalization_eigen_threshold, &states))
     return std::nullopt;
   std::map<const double*, int> column;
-  int c = 0;
+  std::vector<int> block_sizes;
   for (const LinearPrior::Block& b : states.blocks) {
-    column[b.address] = c;
-    c += b.tangent;
+    column[b.address] = std::accumulate(block_sizes.begin(), block_sizes.end(), 0);
+    block_sizes.push_back(b.tangent);
   }
   const Frame& oldest = *window_.front();
   const Frame& newest = *window_.back();
@@ -52,7 +54,8 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   // Until the first frame leaves the window (or when the anchored prior was lost), it is the oldest one.
   if (!anchored_prior_) AddGaugeInformation(oldest.State().q_WB, column[oldest.pose], &states.H);
   Matrix6d covariance;
-  if (!MarginalPoseCovariance(states.H, column[newest.pose], &covariance)) return std::nullopt;
+  if (!MarginalPoseCovariance(std::move(states.H), block_sizes, column[newest.pose], &covariance))
+    return std::nullopt;
   return covariance;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -15,23 +16,37 @@
 namespace vigil::estimator {
 namespace {
 
-// Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
-void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, RowMajorMatrix* J) {
+// Scratch space of a term's evaluation, kept across the terms of a marginalization so that none allocates.
+struct TermWorkspace {
+  Eigen::VectorXd r, r0;
+  RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
+  Eigen::RowVectorXd rtJ;
+  Eigen::MatrixXd JtJ;
+  Eigen::VectorXd Jtr;
+  std::vector<double> jacobian_storage;
+  std::vector<double*> jacobian_ptr;
+};
+
+// Applies a robust loss to a residual r and its Jacobian J like Ceres' Corrector (second-order aware).
+void Robustify(const ceres::LossFunction* loss, TermWorkspace* w) {
   if (loss == nullptr) return;
-  const double s = r->squaredNorm();
+  const double s = w->r.squaredNorm();
   double rho[3];
   loss->Evaluate(s, rho);
   const double sqrt_rho1 = std::sqrt(rho[1]);
   if (s == 0.0 || rho[2] <= 0.0) {
-    *r *= sqrt_rho1;
-    *J *= sqrt_rho1;
+    w->r *= sqrt_rho1;
+    w->J *= sqrt_rho1;
     return;
   }
   const double D = 1.0 + 2.0 * s * rho[2] / rho[1];
   const double alpha = 1.0 - std::sqrt(D);
-  const Eigen::VectorXd r0 = *r;
-  *J = sqrt_rho1 * (*J - alpha / s * r0 * (r0.transpose() * *J));
-  *r = sqrt_rho1 / (1.0 - alpha) * r0;
+  // J = sqrt_rho1 (J - alpha / s r0 (r0^T J)), r = sqrt_rho1 / (1 - alpha) r0.
+  w->r0 = w->r;
+  w->rtJ.noalias() = w->r0.transpose() * w->J;
+  for (int i = 0; i < w->J.rows(); ++i)
+    w->J.row(i) = sqrt_rho1 * (w->J.row(i) - (alpha / s * w->r0[i]) * w->rtJ);
+  w->r = sqrt_rho1 / (1.0 - alpha) * w->r0;
 }
 
 // The prior's tangent offset dx = x - x0 at the blocks' current values, and per pose block the inverse right
@@ -75,19 +90,19 @@ Eigen::MatrixXd PseudoInverse(const Eigen::MatrixXd& A, double threshold) {
   return es.eigenvectors() * inv.matrix().asDiagonal() * es.eigenvectors().transpose();
 }
 
-// The kept blocks' Schur complement A, bk in square-root and information form (J, r, H, g of `prior`):
-// Cholesky of A with a ridge, J_p = L^T, r_p = L^-1 bk. The ridge makes the unobservable gauge directions
-// factorizable: `eigen_threshold` plus kRelativeRidge of A's largest diagonal entry, at the level of the
-// rounding in the Schur complement (its gauge eigenvalues come out within about 1e-11 of that entry, either
-// sign). In a 20 s paper run 36 of the 323 priors failed to factorize with the absolute 1e-8 alone, 1 does
-// with this ridge. An information of 1e-12 of the largest is no constraint at all (paper run: about 1e-5, a
-// standard deviation of 300 m or rad). Falls back to the eigen-decomposition (eigenvalues below the
+// The kept blocks' Schur complement A (symmetric), bk in square-root and information form (J, r, H, g of
+// `prior`): Cholesky of A with a ridge, J_p = L^T, r_p = L^-1 bk. The ridge makes the unobservable gauge
+// directions factorizable: `eigen_threshold` plus kRelativeRidge of A's largest diagonal entry, at the level
+// of the rounding in the Schur complement (its gauge eigenvalues come out within about 1e-11 of that entry,
+// either sign). In a 20 s paper run 36 of the 323 priors failed to factorize with the absolute 1e-8 alone, 1
+// does with this ridge. An information of 1e-12 of the largest is no constraint at all (paper run: about
+// 1e-5, a standard deviation of 300 m or rad). Falls back to the eigen-decomposition (eigenvalues below the
 // threshold dropped) if A is not positive semi-definite enough for that. False when nothing is left.
 bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double eigen_threshold,
                     LinearPrior* prior) {
   constexpr double kRelativeRidge = 1e-12;
   const int n = static_cast<int>(A.rows());
-  Eigen::MatrixXd A_sym = 0.5 * (A + A.transpose());
+  Eigen::MatrixXd A_sym = A;
   const double ridge = eigen_threshold + kRelativeRidge * A_sym.diagonal().cwiseAbs().maxCoeff();
   A_sym.diagonal().array() += ridge;
   Eigen::LLT<Eigen::MatrixXd> llt(A_sym);
@@ -137,8 +152,9 @@ Layout LayOut(const LinearPrior* previous, const std::vector<MarginalizationTerm
   Layout layout;
   std::vector<Column>& columns = layout.columns;
   std::unordered_map<const double*, int>& index_of = layout.index_of;
+  index_of.reserve((previous != nullptr ? previous->blocks.size() : 0) + terms.size() + dropped.size());
   auto add = [&](double* address, int ambient) {
-    if (!index_of.emplace(address, static_cast<int>(columns.size())).second) return;
+    if (!index_of.try_emplace(address, static_cast<int>(columns.size())).second) return;
     Column c;
     c.address = address;
     c.ambient = ambient;
@@ -207,12 +223,7 @@ void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalE
 bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layout, NormalEquations* eq) {
   const std::vector<Column>& columns = layout.columns;
   const std::vector<std::vector<int>>& term_columns = layout.term_columns;
-  Eigen::VectorXd r;
-  RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
-  Eigen::MatrixXd JtJ;
-  Eigen::VectorXd Jtr;
-  std::vector<double> jacobian_storage;
-  std::vector<double*> jacobian_ptr;
+  TermWorkspace w;
   for (std::size_t t = 0; t < terms.size(); ++t) {
     const MarginalizationTerm& term = terms[t];
     const std::vector<int32_t>& sizes = term.cost->parameter_block_sizes();
@@ -222,54 +233,58 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       ambient_total += columns[i].ambient;
       total += columns[i].tangent;
     }
-    r.resize(rows);
-    jacobian_storage.resize(static_cast<std::size_t>(rows) * ambient_total);
-    jacobian_ptr.clear();
+    w.r.resize(rows);
+    w.jacobian_storage.resize(static_cast<std::size_t>(rows) * ambient_total);
+    w.jacobian_ptr.clear();
     for (std::size_t k = 0, offset = 0; k < term.blocks.size(); ++k) {
-      jacobian_ptr.push_back(jacobian_storage.data() + offset);
+      w.jacobian_ptr.push_back(w.jacobian_storage.data() + offset);
       offset += static_cast<std::size_t>(rows) * sizes[k];
     }
-    if (!term.cost->Evaluate(term.blocks.data(), r.data(), jacobian_ptr.data())) return false;
-    J.resize(rows, total);
+    if (!term.cost->Evaluate(term.blocks.data(), w.r.data(), w.jacobian_ptr.data())) return false;
+    w.J.resize(rows, total);
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
       const int tangent = columns[term_columns[t][k]].tangent;
-      J.middleCols(c, tangent) =
-          Eigen::Map<const RowMajorMatrix>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
+      w.J.middleCols(c, tangent) =
+          Eigen::Map<const RowMajorMatrix>(w.jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
-    Robustify(term.loss, &r, &J);
+    Robustify(term.loss, &w);
     // Terms of a few rows (a reprojection: 2 x 13) as a sum of outer products of their rows (vectorized,
     // without the blocked matrix-product kernel and its set-up).
     if (rows <= 4) {
-      JtJ.setZero(total, total);
-      for (int i = 0; i < rows; ++i) JtJ.noalias() += J.row(i).transpose() * J.row(i);
+      w.JtJ.setZero(total, total);
+      for (int i = 0; i < rows; ++i) w.JtJ.noalias() += w.J.row(i).transpose() * w.J.row(i);
     } else {
-      JtJ.noalias() = J.transpose() * J;
+      w.JtJ.noalias() = w.J.transpose() * w.J;
     }
-    Jtr.noalias() = J.transpose() * r;
-    eq->AddTerm(columns, term_columns[t], JtJ, Jtr);
+    w.Jtr.noalias() = w.J.transpose() * w.r;
+    eq->AddTerm(columns, term_columns[t], w.JtJ, w.Jtr);
   }
   return true;
 }
 
-// The kept blocks' Schur complement A, bk of the dense equations (scalars already eliminated): the other
-// dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition.
-void EliminateDenseDropped(const NormalEquations& eq, int m, int n, double eigen_threshold,
-                           Eigen::MatrixXd* A, Eigen::VectorXd* bk) {
-  const Eigen::MatrixXd& H = eq.H;
-  *A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
-  *bk = eq.b.tail(n);
-  if (m > 0) {
-    const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
-    // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
-    const Eigen::MatrixXd Hmm_inv =
-        m == kPoseTangentSize + kSpeedBiasSize
-            ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
-            : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
-    const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
-    A->noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
-    bk->noalias() -= Hkm_Hmm_inv * eq.b.head(m);
+// The kept blocks' Schur complement A (symmetric), bk of the dense equations (scalars already eliminated):
+// the other dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition.
+void EliminateDenseDropped(NormalEquations* eq, int m, int n, double eigen_threshold, Eigen::MatrixXd* A,
+                           Eigen::VectorXd* bk) {
+  if (m == 0) {  // nothing to eliminate: the equations themselves, their lower triangle filled in
+    *A = std::move(eq->H);
+    *bk = std::move(eq->b);
+    for (int j = 0; j + 1 < n; ++j) A->col(j).tail(n - j - 1) = A->row(j).tail(n - j - 1).transpose();
+    return;
   }
+  const Eigen::MatrixXd& H = eq->H;
+  *A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
+  *bk = eq->b.tail(n);
+  const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
+  // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
+  const Eigen::MatrixXd Hmm_inv = m == kPoseTangentSize + kSpeedBiasSize
+                                      ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
+                                      : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
+  const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
+  A->noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
+  bk->noalias() -= Hkm_Hmm_inv * eq->b.head(m);
+  *A = (0.5 * (*A + A->transpose())).eval();  // the product is symmetric up to its rounding
 }
 
 // The kept blocks with their current values as the prior's linearization point x0.
@@ -295,8 +310,9 @@ bool LinearPrior::Involves(const double* address) const {
   return false;
 }
 
-bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
+bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                      const std::set<const double*>& dropped, double eigen_threshold,
+                      SchurComplement* schur) {
   const Layout layout = LayOut(previous, terms, dropped);
   if (layout.n == 0) return false;
   NormalEquations eq;
@@ -304,11 +320,18 @@ bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationT
   if (previous != nullptr) AddPreviousPrior(*previous, layout, &eq);
   if (!AddTerms(terms, layout, &eq) || !eq.AllFinite()) return false;
   eq.EliminateScalars(layout.columns, eigen_threshold);
-  Eigen::MatrixXd A;
-  Eigen::VectorXd bk;
-  EliminateDenseDropped(eq, layout.m, layout.n, eigen_threshold, &A, &bk);
-  if (!SquareRootForm(A, bk, eigen_threshold, prior)) return false;
-  prior->blocks = KeptBlocks(layout.columns);
+  EliminateDenseDropped(&eq, layout.m, layout.n, eigen_threshold, &schur->H, &schur->g);
+  schur->blocks = KeptBlocks(layout.columns);
+  return schur->H.allFinite() && schur->g.allFinite();
+}
+
+bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
+  SchurComplement schur;
+  if (!EliminateDropped(previous, terms, dropped, eigen_threshold, &schur) ||
+      !SquareRootForm(schur.H, schur.g, eigen_threshold, prior))
+    return false;
+  prior->blocks = std::move(schur.blocks);
   return prior->J.allFinite() && prior->r.allFinite();
 }
 

@@ -56,8 +56,21 @@ struct LinearPrior {
   bool Involves(const double* address) const;
 };
 
+// The information the kept blocks have once the dropped ones are eliminated (the Schur complement, tangent
+// space, at the current values): H symmetric, g its gradient, over `blocks` with their values as x0. The
+// prior of Marginalize() is its square-root form; the estimator's pose covariance inverts it.
+struct SchurComplement {
+  std::vector<LinearPrior::Block> blocks;
+  Eigen::MatrixXd H;
+  Eigen::VectorXd g;
+};
+
 // `previous` (may be null) is the prior so far; it enters at its blocks' current values, exactly as
 // MarginalizationFactor would. Returns false when nothing is left to keep or the numbers are not finite.
+bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                      const std::set<const double*>& dropped, double eigen_threshold, SchurComplement* schur);
+
+// EliminateDropped() in square-root form. The same arguments; false also when the form has no rows.
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                  const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior);
 
