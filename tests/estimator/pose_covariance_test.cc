@@ -113,9 +113,8 @@ TEST(PoseCovariance, TheGaugePriorHoldsPositionAndYawOnly) {
 }
 
 // Every output pose of a short paper run has a finite, positive definite covariance, and the NEES in the
-// covariance's gauge is of the order of 3 (measured on this run: 1.86 position,
-// 1.25 orientation with the 15-keyframe window; docs/estimator.md): neither absurdly cautious nor
-// overconfident.
+// covariance's gauge is of the order of 3 (measured on this run: 1.81 position, 1.22 orientation with the
+// 15-keyframe window; docs/estimator.md): neither absurdly cautious nor overconfident.
 TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
   sim::SimOptions sim_options;
   sim_options.duration_s = 8.0;
