@@ -16,37 +16,23 @@
 namespace vigil::estimator {
 namespace {
 
-// Scratch space of a term's evaluation, kept across the terms of a marginalization so that none allocates.
-struct TermWorkspace {
-  Eigen::VectorXd r, r0;
-  RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
-  Eigen::RowVectorXd rtJ;
-  Eigen::MatrixXd JtJ;
-  Eigen::VectorXd Jtr;
-  std::vector<double> jacobian_storage;
-  std::vector<double*> jacobian_ptr;
-};
-
-// Applies a robust loss to a residual r and its Jacobian J like Ceres' Corrector (second-order aware).
-void Robustify(const ceres::LossFunction* loss, TermWorkspace* w) {
+// Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
+void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, RowMajorMatrix* J) {
   if (loss == nullptr) return;
-  const double s = w->r.squaredNorm();
+  const double s = r->squaredNorm();
   double rho[3];
   loss->Evaluate(s, rho);
   const double sqrt_rho1 = std::sqrt(rho[1]);
   if (s == 0.0 || rho[2] <= 0.0) {
-    w->r *= sqrt_rho1;
-    w->J *= sqrt_rho1;
+    *r *= sqrt_rho1;
+    *J *= sqrt_rho1;
     return;
   }
   const double D = 1.0 + 2.0 * s * rho[2] / rho[1];
   const double alpha = 1.0 - std::sqrt(D);
-  // J = sqrt_rho1 (J - alpha / s r0 (r0^T J)), r = sqrt_rho1 / (1 - alpha) r0.
-  w->r0 = w->r;
-  w->rtJ.noalias() = w->r0.transpose() * w->J;
-  for (int i = 0; i < w->J.rows(); ++i)
-    w->J.row(i) = sqrt_rho1 * (w->J.row(i) - (alpha / s * w->r0[i]) * w->rtJ);
-  w->r = sqrt_rho1 / (1.0 - alpha) * w->r0;
+  const Eigen::VectorXd r0 = *r;
+  *J = sqrt_rho1 * (*J - alpha / s * r0 * (r0.transpose() * *J));
+  *r = sqrt_rho1 / (1.0 - alpha) * r0;
 }
 
 // The prior's tangent offset dx = x - x0 at the blocks' current values, and per pose block the inverse right
@@ -223,7 +209,12 @@ void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalE
 bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layout, NormalEquations* eq) {
   const std::vector<Column>& columns = layout.columns;
   const std::vector<std::vector<int>>& term_columns = layout.term_columns;
-  TermWorkspace w;
+  Eigen::VectorXd r;
+  RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
+  Eigen::MatrixXd JtJ;
+  Eigen::VectorXd Jtr;
+  std::vector<double> jacobian_storage;
+  std::vector<double*> jacobian_ptr;
   for (std::size_t t = 0; t < terms.size(); ++t) {
     const MarginalizationTerm& term = terms[t];
     const std::vector<int32_t>& sizes = term.cost->parameter_block_sizes();
@@ -233,32 +224,32 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       ambient_total += columns[i].ambient;
       total += columns[i].tangent;
     }
-    w.r.resize(rows);
-    w.jacobian_storage.resize(static_cast<std::size_t>(rows) * ambient_total);
-    w.jacobian_ptr.clear();
+    r.resize(rows);
+    jacobian_storage.resize(static_cast<std::size_t>(rows) * ambient_total);
+    jacobian_ptr.clear();
     for (std::size_t k = 0, offset = 0; k < term.blocks.size(); ++k) {
-      w.jacobian_ptr.push_back(w.jacobian_storage.data() + offset);
+      jacobian_ptr.push_back(jacobian_storage.data() + offset);
       offset += static_cast<std::size_t>(rows) * sizes[k];
     }
-    if (!term.cost->Evaluate(term.blocks.data(), w.r.data(), w.jacobian_ptr.data())) return false;
-    w.J.resize(rows, total);
+    if (!term.cost->Evaluate(term.blocks.data(), r.data(), jacobian_ptr.data())) return false;
+    J.resize(rows, total);
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
       const int tangent = columns[term_columns[t][k]].tangent;
-      w.J.middleCols(c, tangent) =
-          Eigen::Map<const RowMajorMatrix>(w.jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
+      J.middleCols(c, tangent) =
+          Eigen::Map<const RowMajorMatrix>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
-    Robustify(term.loss, &w);
+    Robustify(term.loss, &r, &J);
     // Terms of a few rows (a reprojection: 2 x 13) as a sum of outer products of their rows (vectorized,
     // without the blocked matrix-product kernel and its set-up).
     if (rows <= 4) {
-      w.JtJ.setZero(total, total);
-      for (int i = 0; i < rows; ++i) w.JtJ.noalias() += w.J.row(i).transpose() * w.J.row(i);
+      JtJ.setZero(total, total);
+      for (int i = 0; i < rows; ++i) JtJ.noalias() += J.row(i).transpose() * J.row(i);
     } else {
-      w.JtJ.noalias() = w.J.transpose() * w.J;
+      JtJ.noalias() = J.transpose() * J;
     }
-    w.Jtr.noalias() = w.J.transpose() * w.r;
-    eq->AddTerm(columns, term_columns[t], w.JtJ, w.Jtr);
+    Jtr.noalias() = J.transpose() * r;
+    eq->AddTerm(columns, term_columns[t], JtJ, Jtr);
   }
   return true;
 }
