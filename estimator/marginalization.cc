@@ -205,7 +205,7 @@ void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalE
 }
 
 // Evaluates every term at the current values (robust loss applied) and adds its J^T J and J^T r; false when a
-// cost function fails.
+// cost function fails or gives a residual or Jacobian that is not finite.
 bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layout, NormalEquations* eq) {
   const std::vector<Column>& columns = layout.columns;
   const std::vector<std::vector<int>>& term_columns = layout.term_columns;
@@ -231,7 +231,8 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       jacobian_ptr.push_back(jacobian_storage.data() + offset);
       offset += static_cast<std::size_t>(rows) * sizes[k];
     }
-    if (!term.cost->Evaluate(term.blocks.data(), r.data(), jacobian_ptr.data())) return false;
+    if (!term.cost->Evaluate(term.blocks.data(), r.data(), jacobian_ptr.data()) || !r.allFinite())
+      return false;
     J.resize(rows, total);
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
       const int tangent = columns[term_columns[t][k]].tangent;
@@ -239,6 +240,7 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
           Eigen::Map<const RowMajorMatrix>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
     }
+    if (!J.allFinite()) return false;
     Robustify(term.loss, &r, &J);
     // Terms of a few rows (a reprojection: 2 x 13) as a sum of outer products of their rows (vectorized,
     // without the blocked matrix-product kernel and its set-up).
@@ -309,7 +311,7 @@ bool EliminateDropped(const LinearPrior* previous, const std::vector<Marginaliza
   NormalEquations eq;
   eq.Resize(layout.scalars, layout.m + layout.n, static_cast<int>(layout.columns.size()) - layout.scalars);
   if (previous != nullptr) AddPreviousPrior(*previous, layout, &eq);
-  if (!AddTerms(terms, layout, &eq) || !eq.AllFinite()) return false;
+  if (!AddTerms(terms, layout, &eq)) return false;
   eq.EliminateScalars(layout.columns, eigen_threshold);
   EliminateDenseDropped(&eq, layout.m, layout.n, eigen_threshold, &schur->H, &schur->g);
   schur->blocks = KeptBlocks(layout.columns);

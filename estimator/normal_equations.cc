@@ -54,10 +54,6 @@ void NormalEquations::AddGradient(const Column& k, const Eigen::VectorXd& Jtr, i
     b.segment(k.column, k.tangent) += Jtr.segment(ck, k.tangent);
 }
 
-bool NormalEquations::AllFinite() const {
-  return H.allFinite() && b.allFinite() && Hs.allFinite() && h.allFinite() && bs.allFinite();
-}
-
 void NormalEquations::EliminateScalars(const std::vector<Column>& columns, double threshold) {
   for (int s = 0; s < static_cast<int>(h.size()); ++s) {
     if (!(h[s] > threshold)) continue;

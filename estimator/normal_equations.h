@@ -42,7 +42,6 @@ struct NormalEquations {
   // Adds the block (k, l) of a term's J^T J whose columns start at ck, cl (l is the column l_index).
   void Add(const Column& k, const Column& l, int l_index, const Eigen::MatrixXd& JtJ, int ck, int cl);
   void AddGradient(const Column& k, const Eigen::VectorXd& Jtr, int ck);
-  bool AllFinite() const;
   // Eliminates every scalar with a pivot above `threshold` (the others count as zero), block by block over
   // the dense blocks its row reaches: H, b become the Schur complement of the scalars.
   void EliminateScalars(const std::vector<Column>& columns, double threshold);

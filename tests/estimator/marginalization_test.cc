@@ -1,6 +1,7 @@
 // Marginalize(): the prior it builds against the Schur complement of the full normal equations, and the
 // previous prior's information form against the same prior entering as a residual block.
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -340,6 +341,29 @@ TEST(MarginalizationTest, PriorIsUpperTrapezoidal) {
              psd_part * psd_part.completeOrthogonalDecomposition().pseudoInverse() * indefinite.g)
                 .norm(),
             1e-9);
+}
+
+// A term that evaluates to a value that is not finite makes the marginalization fail, even where the
+// elimination would skip it (a dropped depth whose only information is that term).
+TEST(MarginalizationTest, ANonFiniteTermFails) {
+  std::vector<double> s = {0.3}, k = {0.5, 0.2, -0.1};
+  const LinearCost kept({3}, Eigen::MatrixXd::Identity(3, 3), Eigen::VectorXd::Zero(3));
+  Eigen::MatrixXd A = Eigen::MatrixXd::Random(2, 4);
+  A(0, 0) = A(1, 0) = std::nan("");
+  const LinearCost bad_jacobian({1, 3}, A, Eigen::VectorXd::Zero(2));
+  const LinearCost bad_residual({1, 3}, Eigen::MatrixXd::Random(2, 4),
+                                Eigen::Vector2d(std::numeric_limits<double>::infinity(), 0.0));
+  for (const LinearCost* bad : {&bad_jacobian, &bad_residual}) {
+    LinearPrior prior;
+    EXPECT_FALSE(Marginalize(nullptr, {{&kept, nullptr, {k.data()}}, {bad, nullptr, {s.data(), k.data()}}},
+                             {s.data()}, 1e-8, &prior));
+    SchurComplement schur;
+    EXPECT_FALSE(EliminateDropped(nullptr,
+                                  {{&kept, nullptr, {k.data()}}, {bad, nullptr, {s.data(), k.data()}}},
+                                  {s.data()}, 1e-8, &schur));
+  }
+  LinearPrior prior;
+  EXPECT_TRUE(Marginalize(nullptr, {{&kept, nullptr, {k.data()}}}, {}, 1e-8, &prior));
 }
 
 }  // namespace
