@@ -37,8 +37,8 @@ void AddGaugeInformation(const Eigen::Quaterniond& q_WB, int column, Eigen::Matr
 // blocks of `block_sizes` in order, one of which starts at `column`): the marginal covariance of that pose.
 // The other blocks are eliminated by Schur complements, the one with the fewest coupled dimensions first (a
 // window's speed-bias blocks are coupled to their neighbours only), and once those left are all coupled, by
-// a dense Cholesky factorization with the pose last. False when `H` is not positive definite or the block
-// not finite.
+// a dense Cholesky factorization with the pose last. False when no pose block starts at `column`, `H` is
+// not positive definite or the block not finite.
 bool MarginalPoseCovariance(Eigen::MatrixXd H, const std::vector<int>& block_sizes, int column,
                             Matrix6d* covariance);
 
