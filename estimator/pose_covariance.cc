@@ -70,13 +70,14 @@ class BlockElimination {
       for (int c = start_[j]; c < start_[j + 1]; ++c) columns.push_back(c);
     const Eigen::LLT<Eigen::MatrixXd> pivot(Block(k, k));
     if (pivot.info() != Eigen::Success) return false;
+    alive_[k] = false;
+    if (columns.empty()) return true;  // an uncoupled block: nothing to update
     Eigen::MatrixXd W = H_(Eigen::seqN(start_[k], size_[k]), columns);
     pivot.matrixL().solveInPlace(W);
     H_(columns, columns) -= W.transpose() * W;
     for (const int a : neighbours)
       for (const int b : neighbours)
         if (a != b) coupled_[a][b] = true;
-    alive_[k] = false;
     return true;
   }
 
