@@ -4,7 +4,6 @@
 // frame (pose_covariance.h).
 #include <map>
 #include <memory>
-#include <numeric>
 #include <set>
 #include <utility>
 #include <vector>
@@ -44,8 +43,10 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
     return std::nullopt;
   std::map<const double*, int> column;
   std::vector<int> block_sizes;
+  int c = 0;
   for (const LinearPrior::Block& b : states.blocks) {
-    column[b.address] = std::accumulate(block_sizes.begin(), block_sizes.end(), 0);
+    column[b.address] = c;
+    c += b.tangent;
     block_sizes.push_back(b.tangent);
   }
   const Frame& oldest = *window_.front();

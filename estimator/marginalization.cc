@@ -257,7 +257,8 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
 }
 
 // The kept blocks' Schur complement A (symmetric), bk of the dense equations (scalars already eliminated):
-// the other dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition.
+// the other dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition. With
+// none of those (m = 0) the equations' dense part is moved into A and bk, not copied.
 void EliminateDenseDropped(NormalEquations* eq, int m, int n, double eigen_threshold, Eigen::MatrixXd* A,
                            Eigen::VectorXd* bk) {
   if (m == 0) {  // nothing to eliminate: the equations themselves, their lower triangle filled in

@@ -81,9 +81,10 @@ class BlockElimination {
     return true;
   }
 
-  // The living blocks' Schur complement onto `target` by a dense Cholesky factorization with `target`
-  // last: S = L_tt L_tt^T. False when the living blocks are not positive definite.
-  bool TargetInformation(int target, Matrix6d* S) const {
+  // The Cholesky factor L_tt of the living blocks' Schur complement onto `target` (S = L_tt L_tt^T), from
+  // a dense factorization of the living blocks with `target` last. False when they are not positive
+  // definite.
+  bool TargetFactor(int target, Matrix6d* L_tt) const {
     std::vector<int> columns;
     for (std::size_t k = 0; k < size_.size(); ++k)
       if (alive_[k] && static_cast<int>(k) != target)
@@ -91,8 +92,7 @@ class BlockElimination {
     for (int c = start_[target]; c < start_[target + 1]; ++c) columns.push_back(c);
     const Eigen::LLT<Eigen::MatrixXd> llt(H_(columns, columns));
     if (llt.info() != Eigen::Success) return false;
-    const Matrix6d L_tt = llt.matrixLLT().bottomRightCorner<6, 6>().triangularView<Eigen::Lower>();
-    *S = L_tt * L_tt.transpose();
+    *L_tt = llt.matrixLLT().bottomRightCorner<6, 6>().triangularView<Eigen::Lower>();
     return true;
   }
 
@@ -146,12 +146,11 @@ bool MarginalPoseCovariance(Eigen::MatrixXd H, const std::vector<int>& block_siz
   if (target < 0 || block_sizes[target] != kPoseTangentSize) return false;
   for (int k = elimination.SparsestBlock(target); k >= 0; k = elimination.SparsestBlock(target))
     if (!elimination.Eliminate(k)) return false;
-  Matrix6d S;
-  if (!elimination.TargetInformation(target, &S)) return false;
-  const Eigen::LLT<Matrix6d> llt(S);
-  if (llt.info() != Eigen::Success) return false;
-  const Matrix6d block = llt.solve(Matrix6d::Identity());
-  *covariance = 0.5 * (block + block.transpose());
+  Matrix6d L_tt;
+  if (!elimination.TargetFactor(target, &L_tt)) return false;
+  // S^-1 = L_tt^-T L_tt^-1.
+  const Matrix6d L_inv = L_tt.triangularView<Eigen::Lower>().solve(Matrix6d::Identity());
+  *covariance = L_inv.transpose() * L_inv;
   return covariance->allFinite();
 }
 
