@@ -17,7 +17,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -144,10 +143,9 @@ class Estimator {
   void MarginalizeSecondNewest(bool with_prior);
   // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
   // fails.
-  void KeepPrior(const std::vector<MarginalizationTerm>& terms, const std::set<const double*>& dropped);
+  void KeepPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped);
   // The same for anchored_prior_, which starts as the gauge on the oldest frame when it is null.
-  void KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
-                         const std::set<const double*>& dropped);
+  void KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped);
   void Reset();
   // The newest pose's covariance from the window's information (estimator_covariance.cc).
   std::optional<Matrix6d> NewestPoseCovariance();

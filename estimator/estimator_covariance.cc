@@ -4,7 +4,6 @@
 // frame (pose_covariance.h).
 #include <map>
 #include <memory>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -17,7 +16,7 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   if (window_.size() < 2) return std::nullopt;
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
   std::vector<MarginalizationTerm> terms;
-  std::set<const double*> dropped;
+  DroppedBlocks dropped;
   if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {window_.front()->speed_bias}});
   for (std::size_t k = 1; k < window_.size(); ++k) {
     auto factor = std::make_unique<ImuFactor>(*window_[k]->imu_from_prev, g_W_);
@@ -30,7 +29,7 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
     if (!features_.Usable(track)) continue;
-    dropped.insert(&track.inv_depth);
+    dropped.push_back(&track.inv_depth);
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
   }
   for (const ReprojectionTerm& term : reprojections)

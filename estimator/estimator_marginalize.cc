@@ -1,6 +1,5 @@
 // Sliding the window: the oldest frame (after a keyframe) or the second newest frame leaves it.
 #include <memory>
-#include <set>
 #include <vector>
 
 #include "estimator/estimator.h"
@@ -9,8 +8,7 @@
 
 namespace vigil::estimator {
 
-void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
-                          const std::set<const double*>& dropped) {
+void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped) {
   auto prior = std::make_shared<LinearPrior>();
   if (Marginalize(prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold,
                   prior.get())) {
@@ -22,7 +20,7 @@ void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms,
 }
 
 void Estimator::KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
-                                  const std::set<const double*>& dropped) {
+                                  const DroppedBlocks& dropped) {
   const LinearPrior gauge = GaugePrior(window_.front()->pose);
   const LinearPrior* previous = anchored_prior_ ? anchored_prior_.get() : &gauge;
   auto anchored = std::make_shared<LinearPrior>();
@@ -51,7 +49,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
   if (with_prior && window_.size() >= 2) {
     std::vector<std::unique_ptr<ceres::CostFunction>> costs;
     std::vector<MarginalizationTerm> terms;
-    std::set<const double*> dropped = {oldest.pose, oldest.speed_bias};
+    DroppedBlocks dropped = {oldest.pose, oldest.speed_bias};
     if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
     Frame& second = *window_[1];
     {
@@ -64,7 +62,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     std::vector<ReprojectionTerm> reprojections;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
-      dropped.insert(&track.inv_depth);
+      dropped.push_back(&track.inv_depth);
       AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     }
     for (const ReprojectionTerm& term : reprojections)

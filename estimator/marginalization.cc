@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <unordered_map>
 #include <utility>
 
@@ -129,42 +130,52 @@ bool SquareRootForm(const Eigen::MatrixXd& A, const Eigen::VectorXd& bk, double 
 struct Layout {
   std::vector<Column> columns;
   std::unordered_map<const double*, int> index_of;
-  std::vector<std::vector<int>> term_columns;  // per term: its blocks' indices into columns
+  std::vector<int> term_columns;         // the terms' blocks' indices into columns, term after term
+  std::vector<int> term_columns_offset;  // where term t's start in term_columns (one past the last term too)
   int scalars = 0, m = 0, n = 0;
+
+  IndexRange TermColumns(std::size_t t) const {
+    return {term_columns.data() + term_columns_offset[t],
+            term_columns_offset[t + 1] - term_columns_offset[t]};
+  }
 };
 
 Layout LayOut(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-              const std::set<const double*>& dropped) {
+              const DroppedBlocks& dropped) {
   Layout layout;
   std::vector<Column>& columns = layout.columns;
   std::unordered_map<const double*, int>& index_of = layout.index_of;
   index_of.reserve((previous != nullptr ? previous->blocks.size() : 0) + terms.size() + dropped.size());
   auto add = [&](double* address, int ambient) {
-    if (!index_of.try_emplace(address, static_cast<int>(columns.size())).second) return;
-    Column c;
-    c.address = address;
-    c.ambient = ambient;
-    c.tangent = TangentSizeOf(ambient);
-    c.dropped = dropped.count(address) > 0;
-    c.coupled = previous != nullptr && previous->Involves(address);  // the prior is dense over its blocks
-    columns.push_back(c);
+    const auto [it, added] = index_of.try_emplace(address, static_cast<int>(columns.size()));
+    if (added) {
+      Column c;
+      c.address = address;
+      c.ambient = ambient;
+      c.tangent = TangentSizeOf(ambient);
+      columns.push_back(c);
+    }
+    return it->second;
   };
   if (previous != nullptr)
-    for (const LinearPrior::Block& b : previous->blocks) add(b.address, b.size);
-  std::vector<std::vector<int>>& term_columns = layout.term_columns;
-  term_columns.resize(terms.size());
+    for (const LinearPrior::Block& b : previous->blocks) columns[add(b.address, b.size)].coupled = true;
+  layout.term_columns_offset.reserve(terms.size() + 1);
+  layout.term_columns_offset.push_back(0);
+  for (const MarginalizationTerm& term : terms) {
+    const std::vector<int32_t>& sizes = term.cost->parameter_block_sizes();
+    for (std::size_t k = 0; k < term.blocks.size(); ++k)
+      layout.term_columns.push_back(add(term.blocks[k], sizes[k]));
+    layout.term_columns_offset.push_back(static_cast<int>(layout.term_columns.size()));
+  }
+  for (const double* address : dropped)
+    if (const auto it = index_of.find(address); it != index_of.end()) columns[it->second].dropped = true;
+  // A prior is dense over its blocks (marked above); a term with two dropped scalars couples them.
   for (std::size_t t = 0; t < terms.size(); ++t) {
-    const std::vector<int32_t>& sizes = terms[t].cost->parameter_block_sizes();
-    term_columns[t].reserve(terms[t].blocks.size());
     int dropped_scalars = 0;
-    for (std::size_t k = 0; k < terms[t].blocks.size(); ++k) {
-      add(terms[t].blocks[k], sizes[k]);
-      const int i = index_of.at(terms[t].blocks[k]);
-      term_columns[t].push_back(i);
+    for (const int i : layout.TermColumns(t))
       if (columns[i].dropped && columns[i].tangent == 1) ++dropped_scalars;
-    }
     if (dropped_scalars > 1)
-      for (const int i : term_columns[t])
+      for (const int i : layout.TermColumns(t))
         if (columns[i].tangent == 1) columns[i].coupled = true;
   }
   int &scalars = layout.scalars, &m = layout.m, &n = layout.n;
@@ -199,16 +210,16 @@ void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalE
     }
     c += previous.blocks[k].tangent;
   }
-  std::vector<int> indices;
-  for (const LinearPrior::Block& b : previous.blocks) indices.push_back(layout.index_of.at(b.address));
-  eq->AddTerm(layout.columns, indices, H, g);
+  // The prior's blocks are the layout's first columns, in the prior's order.
+  std::vector<int> indices(previous.blocks.size());
+  std::iota(indices.begin(), indices.end(), 0);
+  eq->AddTerm(layout.columns, {indices.data(), static_cast<int>(indices.size())}, H, g);
 }
 
 // Evaluates every term at the current values (robust loss applied) and adds its J^T J and J^T r; false when a
 // cost function fails or gives a residual or Jacobian that is not finite.
 bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layout, NormalEquations* eq) {
   const std::vector<Column>& columns = layout.columns;
-  const std::vector<std::vector<int>>& term_columns = layout.term_columns;
   Eigen::VectorXd r;
   RowMajorMatrix J;  // a term's Jacobian: rows contiguous for the outer products below
   Eigen::MatrixXd JtJ;
@@ -219,8 +230,9 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
     const MarginalizationTerm& term = terms[t];
     const std::vector<int32_t>& sizes = term.cost->parameter_block_sizes();
     const int rows = term.cost->num_residuals();
+    const IndexRange term_columns = layout.TermColumns(t);
     int ambient_total = 0, total = 0;
-    for (const int i : term_columns[t]) {
+    for (const int i : term_columns) {
       ambient_total += columns[i].ambient;
       total += columns[i].tangent;
     }
@@ -235,7 +247,7 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       return false;
     J.resize(rows, total);
     for (std::size_t k = 0, c = 0; k < term.blocks.size(); ++k) {
-      const int tangent = columns[term_columns[t][k]].tangent;
+      const int tangent = columns[term_columns.first[k]].tangent;
       J.middleCols(c, tangent) =
           Eigen::Map<const RowMajorMatrix>(jacobian_ptr[k], rows, sizes[k]).leftCols(tangent);
       c += tangent;
@@ -251,7 +263,7 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       JtJ.noalias() = J.transpose() * J;
     }
     Jtr.noalias() = J.transpose() * r;
-    eq->AddTerm(columns, term_columns[t], JtJ, Jtr);
+    eq->AddTerm(columns, term_columns, JtJ, Jtr);
   }
   return true;
 }
@@ -305,8 +317,7 @@ bool LinearPrior::Involves(const double* address) const {
 }
 
 bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                      const std::set<const double*>& dropped, double eigen_threshold,
-                      SchurComplement* schur) {
+                      const DroppedBlocks& dropped, double eigen_threshold, SchurComplement* schur) {
   const Layout layout = LayOut(previous, terms, dropped);
   if (layout.n == 0) return false;
   NormalEquations eq;
@@ -320,7 +331,7 @@ bool EliminateDropped(const LinearPrior* previous, const std::vector<Marginaliza
 }
 
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior) {
+                 const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior) {
   SchurComplement schur;
   if (!EliminateDropped(previous, terms, dropped, eigen_threshold, &schur) ||
       !SquareRootForm(schur.H, schur.g, eigen_threshold, prior))

@@ -19,8 +19,11 @@
 // inverse used (a pivot at or below the threshold counts as zero, as a dropped eigenvalue does).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <memory>
-#include <set>
+#include <stdexcept>
 #include <vector>
 
 #include <ceres/cost_function.h>
@@ -29,12 +32,42 @@
 
 namespace vigil::estimator {
 
+// A term's parameter blocks, held in place: a covariance evaluates about a thousand terms per frame, and a
+// vector each would cost an allocation each.
+class TermBlocks {
+ public:
+  static constexpr std::size_t kCapacity = 6;
+  TermBlocks() = default;
+  TermBlocks(std::initializer_list<double*> blocks) : TermBlocks(blocks.begin(), blocks.end()) {}
+  template <class Iterator>
+  TermBlocks(Iterator first, Iterator last) {
+    for (; first != last; ++first) push_back(*first);
+  }
+  void push_back(double* block) {
+    if (size_ == kCapacity)
+      throw std::length_error("a marginalization term has more than 6 parameter blocks");
+    blocks_[size_++] = block;
+  }
+  double* const* data() const { return blocks_.data(); }
+  std::size_t size() const { return size_; }
+  double* operator[](std::size_t k) const { return blocks_[k]; }
+  double* const* begin() const { return blocks_.data(); }
+  double* const* end() const { return blocks_.data() + size_; }
+
+ private:
+  std::array<double*, kCapacity> blocks_{};
+  std::size_t size_ = 0;
+};
+
 // One residual block to marginalize (the caller keeps the cost and loss functions alive during Marginalize).
 struct MarginalizationTerm {
   const ceres::CostFunction* cost = nullptr;
   const ceres::LossFunction* loss = nullptr;  // may be null
-  std::vector<double*> blocks;
+  TermBlocks blocks;
 };
+
+// The blocks a marginalization eliminates, in any order (a block no term or prior involves is ignored).
+using DroppedBlocks = std::vector<const double*>;
 
 struct LinearPrior {
   struct Block {
@@ -68,11 +101,11 @@ struct SchurComplement {
 // `previous` (may be null) is the prior so far; it enters at its blocks' current values, exactly as
 // MarginalizationFactor would. Returns false when nothing is left to keep or the numbers are not finite.
 bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                      const std::set<const double*>& dropped, double eigen_threshold, SchurComplement* schur);
+                      const DroppedBlocks& dropped, double eigen_threshold, SchurComplement* schur);
 
 // EliminateDropped() in square-root form. The same arguments; false also when the form has no rows.
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                 const std::set<const double*>& dropped, double eigen_threshold, LinearPrior* prior);
+                 const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior);
 
 // Rows [row_begin, row_end) of a prior's r + J dx over its blocks from `first_block` on (J must be zero in
 // those rows left of that block's columns); by default all of it.

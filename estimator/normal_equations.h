@@ -15,6 +15,14 @@ namespace vigil::estimator {
 
 using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// A run of column indices stored elsewhere (a term's blocks, a scalar's reach).
+struct IndexRange {
+  const int* first = nullptr;
+  int count = 0;
+  const int* begin() const { return first; }
+  const int* end() const { return first + count; }
+};
+
 // A parameter block of the normal equations: a sparse row of its own (`scalar`) or columns in the dense part
 // (`column`).
 struct Column {
@@ -31,20 +39,27 @@ struct NormalEquations {
   Eigen::MatrixXd H;
   RowMajorMatrix Hs;
   Eigen::VectorXd b, h, bs;
-  std::vector<std::vector<int>>
-      reach;  // per scalar: the dense blocks (indices into the columns) its row reaches
+
+  // The dense blocks (indices into the columns) a scalar's row reaches, in the order first reached.
+  IndexRange ReachOf(int scalar) const;
 
   // Zero equations of `scalars` sparse rows and `dense` columns in `dense_blocks` blocks.
   void Resize(int scalars, int dense, int dense_blocks);
   // Adds a term's J^T J and J^T r, whose columns are those of `indices` (into `columns`) in that order.
-  void AddTerm(const std::vector<Column>& columns, const std::vector<int>& indices,
-               const Eigen::MatrixXd& JtJ, const Eigen::VectorXd& Jtr);
+  void AddTerm(const std::vector<Column>& columns, IndexRange indices, const Eigen::MatrixXd& JtJ,
+               const Eigen::VectorXd& Jtr);
   // Adds the block (k, l) of a term's J^T J whose columns start at ck, cl (l is the column l_index).
   void Add(const Column& k, const Column& l, int l_index, const Eigen::MatrixXd& JtJ, int ck, int cl);
   void AddGradient(const Column& k, const Eigen::VectorXd& Jtr, int ck);
   // Eliminates every scalar with a pivot above `threshold` (the others count as zero), block by block over
   // the dense blocks its row reaches: H, b become the Schur complement of the scalars.
   void EliminateScalars(const std::vector<Column>& columns, double threshold);
+
+ private:
+  // Per scalar a fixed slot of dense_blocks_ entries (one allocation for all, not one per scalar).
+  std::vector<int> reach_;
+  std::vector<int> reach_count_;
+  int dense_blocks_ = 0;
 };
 
 }  // namespace vigil::estimator

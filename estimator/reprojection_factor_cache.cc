@@ -10,8 +10,18 @@ void ReprojectionFactorCache::AppendTerms(int id, const FeatureTrack& track,
                                           std::vector<Term>* terms) {
   const auto& [anchor_id, n_anchor] = track.observations.front();
   double* anchor_pose = pose_of(anchor_id);
-  // Reuse the cached factor of every (anchor, frame) pair still observed (both lists are oldest first).
   std::vector<Entry>& cached = factors_[id];
+  // The common case, a track unchanged since its last terms: every cached factor as it is.
+  const std::size_t pairs = track.observations.size() - 1;
+  bool unchanged = cached.size() == pairs;
+  for (std::size_t k = 0; unchanged && k < pairs; ++k)
+    unchanged = cached[k].anchor_frame == anchor_id && cached[k].frame == track.observations[k + 1].first;
+  if (unchanged) {
+    for (const Entry& e : cached)
+      terms->push_back({e.factor.get(), {anchor_pose, pose_of(e.frame), inv_depth}});
+    return;
+  }
+  // Reuse the cached factor of every (anchor, frame) pair still observed (both lists are oldest first).
   std::vector<Entry> current;
   current.reserve(track.observations.size() - 1);
   std::size_t c = 0;

@@ -200,10 +200,10 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
     terms_b.push_back({factors.back().get(), l, {pose_b.data(), pose_c.data(), depths_b[i].data()}});
   }
   terms_a.push_back({&anchor, nullptr, {pose_a.data()}});
-  std::set<const double*> dropped_a = {pose_a.data()}, dropped_b = {pose_b.data()};
+  DroppedBlocks dropped_a = {pose_a.data()}, dropped_b = {pose_b.data()};
   for (int i = 0; i < 8; ++i) {
-    dropped_a.insert(depths_a[i].data());
-    dropped_b.insert(depths_b[i].data());
+    dropped_a.push_back(depths_a[i].data());
+    dropped_b.push_back(depths_b[i].data());
   }
   auto first = std::make_shared<LinearPrior>();
   ASSERT_TRUE(Marginalize(nullptr, terms_a, dropped_a, 1e-8, first.get()));
@@ -224,7 +224,9 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
   LinearPrior from_information;
   ASSERT_TRUE(Marginalize(first.get(), terms_b, dropped_b, 1e-8, &from_information));
   const MarginalizationFactor factor(first);
-  std::vector<MarginalizationTerm> with_factor = {{&factor, nullptr, factor.parameter_blocks()}};
+  const std::vector<double*> factor_blocks = factor.parameter_blocks();
+  std::vector<MarginalizationTerm> with_factor = {
+      {&factor, nullptr, {factor_blocks.begin(), factor_blocks.end()}}};
   with_factor.insert(with_factor.end(), terms_b.begin(), terms_b.end());
   LinearPrior from_factor;
   ASSERT_TRUE(Marginalize(nullptr, with_factor, dropped_b, 1e-8, &from_factor));
@@ -364,6 +366,17 @@ TEST(MarginalizationTest, ANonFiniteTermFails) {
   }
   LinearPrior prior;
   EXPECT_TRUE(Marginalize(nullptr, {{&kept, nullptr, {k.data()}}}, {}, 1e-8, &prior));
+}
+
+TEST(TermBlocksTest, HoldsUpToItsCapacityInOrder) {
+  double x[7];
+  const TermBlocks blocks = {&x[0], &x[1], &x[2]};
+  ASSERT_EQ(blocks.size(), 3u);
+  EXPECT_EQ(std::vector<double*>(blocks.begin(), blocks.end()), (std::vector<double*>{&x[0], &x[1], &x[2]}));
+  TermBlocks full;
+  for (std::size_t k = 0; k < TermBlocks::kCapacity; ++k) full.push_back(&x[k]);
+  EXPECT_EQ(full[TermBlocks::kCapacity - 1], &x[TermBlocks::kCapacity - 1]);
+  EXPECT_THROW(full.push_back(&x[6]), std::length_error);
 }
 
 }  // namespace

@@ -66,7 +66,9 @@ void Dense(const std::vector<Column>& columns, const std::vector<Term>& terms, E
 NormalEquations Accumulate(const std::vector<Column>& columns, const std::vector<Term>& terms) {
   NormalEquations eq;
   eq.Resize(2, 18, 3);
-  for (const Term& t : terms) eq.AddTerm(columns, t.indices, t.J.transpose() * t.J, t.J.transpose() * t.r);
+  for (const Term& t : terms)
+    eq.AddTerm(columns, {t.indices.data(), static_cast<int>(t.indices.size())}, t.J.transpose() * t.J,
+               t.J.transpose() * t.r);
   return eq;
 }
 
@@ -88,8 +90,11 @@ TEST(NormalEquationsTest, AccumulatesTheDenseNormalEquations) {
   }
   EXPECT_EQ(H(0, 1), 0.0);  // the scalars share no term
   // Scalar 0 reaches the pose and the 9-vector, scalar 1 the 3-vector and the pose.
-  EXPECT_EQ(eq.reach[0], (std::vector<int>{3, 4}));
-  EXPECT_EQ(eq.reach[1], (std::vector<int>{2, 3}));
+  auto reach = [&](int scalar) {
+    return std::vector<int>(eq.ReachOf(scalar).begin(), eq.ReachOf(scalar).end());
+  };
+  EXPECT_EQ(reach(0), (std::vector<int>{3, 4}));
+  EXPECT_EQ(reach(1), (std::vector<int>{2, 3}));
 }
 
 TEST(NormalEquationsTest, EliminatingTheScalarsGivesTheSchurComplement) {

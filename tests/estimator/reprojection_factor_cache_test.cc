@@ -41,6 +41,14 @@ TEST_F(ReprojectionFactorCacheTest, ReusesFactorsWhileTheirObservationsLive) {
     EXPECT_EQ(first[k].blocks[1], poses_[k + 2].data());
     EXPECT_EQ(first[k].blocks[2], &inv_depth_);
   }
+  // Asked again with the track unchanged: the same factors on the same blocks.
+  const auto again = Terms(7, Track({1, 2, 3}));
+  ASSERT_EQ(again.size(), 2u);
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    EXPECT_EQ(again[k].factor, first[k].factor);
+    EXPECT_EQ(again[k].blocks, first[k].blocks);
+  }
+  EXPECT_EQ(cache_.size(), 2u);
   // Frame 2 left the window and frame 4 observed the track: (1, 3) is reused, (1, 4) is new.
   const auto second = Terms(7, Track({1, 3, 4}));
   ASSERT_EQ(second.size(), 2u);
