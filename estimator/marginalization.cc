@@ -254,9 +254,16 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
     }
     if (!J.allFinite()) return false;
     Robustify(term.loss, &r, &J);
-    // Terms of a few rows (a reprojection: 2 x 13) as a sum of outer products of their rows (vectorized,
-    // without the blocked matrix-product kernel and its set-up).
-    if (rows <= 4) {
+    // A reprojection (2 x 13: two poses and a depth, most of the terms) in fixed sizes, which the compiler
+    // unrolls; other terms of a few rows as a sum of outer products of their rows (vectorized, without the
+    // blocked matrix-product kernel and its set-up).
+    constexpr int kReprojectionRows = 2, kReprojectionColumns = 2 * kPoseTangentSize + 1;
+    if (rows == kReprojectionRows && total == kReprojectionColumns) {
+      using Reprojection = Eigen::Matrix<double, kReprojectionRows, kReprojectionColumns, Eigen::RowMajor>;
+      const Reprojection Jf = J;
+      JtJ.resize(kReprojectionColumns, kReprojectionColumns);
+      JtJ.noalias() = Jf.transpose().lazyProduct(Jf);
+    } else if (rows <= 4) {
       JtJ.setZero(total, total);
       for (int i = 0; i < rows; ++i) JtJ.noalias() += J.row(i).transpose() * J.row(i);
     } else {

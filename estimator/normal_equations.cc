@@ -9,7 +9,7 @@ namespace vigil::estimator {
 void NormalEquations::Resize(int scalars, int dense, int dense_blocks) {
   H = Eigen::MatrixXd::Zero(dense, dense);
   b = Eigen::VectorXd::Zero(dense);
-  Hs = Eigen::MatrixXd::Zero(scalars, dense);
+  Hs.resize(scalars, dense);  // not zeroed: a row's block is assigned when the row first reaches it
   h = Eigen::VectorXd::Zero(scalars);
   bs = Eigen::VectorXd::Zero(scalars);
   dense_blocks_ = dense_blocks;
@@ -42,10 +42,14 @@ void NormalEquations::Add(const Column& k, const Column& l, int l_index, const E
   if (k.scalar >= 0 && l.scalar >= 0) {
     h[k.scalar] += JtJ(ck, cl);  // the same scalar: uncoupled scalars share no term
   } else if (k.scalar >= 0) {
-    Hs.row(k.scalar).segment(l.column, l.tangent) += JtJ.block(ck, cl, 1, l.tangent);
+    auto row_block = Hs.row(k.scalar).segment(l.column, l.tangent);
     const IndexRange r = ReachOf(k.scalar);
-    if (std::find(r.begin(), r.end(), l_index) == r.end())
+    if (std::find(r.begin(), r.end(), l_index) == r.end()) {
       reach_[static_cast<std::size_t>(k.scalar) * dense_blocks_ + reach_count_[k.scalar]++] = l_index;
+      row_block = JtJ.block(ck, cl, 1, l.tangent);
+    } else {
+      row_block += JtJ.block(ck, cl, 1, l.tangent);
+    }
   } else if (l.scalar < 0 && k.column <= l.column) {
     if (k.tangent == kPoseTangentSize && l.tangent == kPoseTangentSize)  // pose x pose: fixed size
       H.block<kPoseTangentSize, kPoseTangentSize>(k.column, l.column) +=

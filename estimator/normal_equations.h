@@ -2,9 +2,10 @@
 //
 // Every parameter block is a Column. Dropped 1-D blocks that share no residual block with another dropped 1-D
 // block (feature inverse depths) are "scalars": each has a sparse row of its own (its diagonal entry h[s],
-// its row Hs.row(s) over the dense columns, the dense blocks that row reaches and its gradient bs[s]); every
-// other block has columns in the dense part H, b (the other dropped blocks first), of which H holds the
-// blocks on and above the diagonal only (the lower ones are never read).
+// its row Hs.row(s) over the dense columns, the dense blocks that row reaches and its gradient bs[s]; only
+// the reached blocks of a row are set, the rest of Hs is never written nor read); every other block has
+// columns in the dense part H, b (the other dropped blocks first), of which H holds the blocks on and above
+// the diagonal only (the lower ones are never read).
 #pragma once
 
 #include <vector>
