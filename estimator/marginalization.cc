@@ -131,7 +131,7 @@ struct Layout {
   std::vector<Column> columns;
   std::unordered_map<const double*, int> index_of;
   std::vector<int> term_columns;         // the terms' blocks' indices into columns, term after term
-  std::vector<int> term_columns_offset;  // where term t's start in term_columns (one past the last term too)
+  std::vector<int> term_columns_offset;  // where term t starts in term_columns (and one past the last term)
   int scalars = 0, m = 0, n = 0;
 
   IndexRange TermColumns(std::size_t t) const {
