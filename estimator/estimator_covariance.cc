@@ -2,7 +2,6 @@
 // solve used, robust loss applied as Ceres does, with the anchored prior in place of the solve's), the
 // feature depths eliminated by the marginalization's Schur complement, the gauge held at the run's first
 // frame (pose_covariance.h).
-#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -40,21 +39,22 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   if (!EliminateDropped(anchored_prior_.get(), terms, dropped,
                         options_.window.marginalization_eigen_threshold, &states))
     return std::nullopt;
-  std::map<const double*, int> column;
+  // The blocks' sizes and the first columns of the oldest and the newest pose.
+  const Frame& oldest = *window_.front();
+  const Frame& newest = *window_.back();
   std::vector<int> block_sizes;
-  int c = 0;
+  int oldest_column = -1, newest_column = -1, c = 0;
   for (const LinearPrior::Block& b : states.blocks) {
-    column[b.address] = c;
+    if (b.address == oldest.pose) oldest_column = c;
+    if (b.address == newest.pose) newest_column = c;
     c += b.tangent;
     block_sizes.push_back(b.tangent);
   }
-  const Frame& oldest = *window_.front();
-  const Frame& newest = *window_.back();
-  if (!column.count(oldest.pose) || !column.count(newest.pose)) return std::nullopt;
+  if (oldest_column < 0 || newest_column < 0) return std::nullopt;
   // Until the first frame leaves the window (or when the anchored prior was lost), it is the oldest one.
-  if (!anchored_prior_) AddGaugeInformation(oldest.State().q_WB, column[oldest.pose], &states.H);
+  if (!anchored_prior_) AddGaugeInformation(oldest.State().q_WB, oldest_column, &states.H);
   Matrix6d covariance;
-  if (!MarginalPoseCovariance(std::move(states.H), block_sizes, column[newest.pose], &covariance))
+  if (!MarginalPoseCovariance(std::move(states.H), block_sizes, newest_column, &covariance))
     return std::nullopt;
   return covariance;
 }
