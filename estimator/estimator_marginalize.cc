@@ -46,6 +46,7 @@ void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres:
 
 void Estimator::MarginalizeOldest(bool with_prior) {
   Frame& oldest = *window_.front();
+  std::vector<int> restarted;  // tracks whose observations all went into the prior
   if (with_prior && window_.size() >= 2) {
     std::vector<std::unique_ptr<ceres::CostFunction>> costs;
     std::vector<MarginalizationTerm> terms;
@@ -60,10 +61,12 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     }
     AppendOldestZeroVelocityTerms(&costs, &terms);
     std::vector<ReprojectionTerm> reprojections;
+    const OldestTracks policy = options_.window.oldest_tracks;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
       dropped.push_back(&track.inv_depth);
       AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
+      if (policy == OldestTracks::kRestart) restarted.push_back(id);
     }
     for (const ReprojectionTerm& term : reprojections)
       terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
@@ -71,6 +74,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     if (options_.pose_covariance) KeepAnchoredPrior(terms, dropped);
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
+  for (const int id : restarted) features_.tracks().erase(id);
   features_.RemoveFrame(oldest.id, CameraPoses());
   window_.pop_front();
   window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor
