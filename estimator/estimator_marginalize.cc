@@ -61,12 +61,11 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     }
     AppendOldestZeroVelocityTerms(&costs, &terms);
     std::vector<ReprojectionTerm> reprojections;
-    const OldestTracks policy = options_.window.oldest_tracks;
     for (auto& [id, track] : features_.tracks()) {
       if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
       dropped.push_back(&track.inv_depth);
       AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
-      if (policy == OldestTracks::kRestart) restarted.push_back(id);
+      if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted.push_back(id);
     }
     for (const ReprojectionTerm& term : reprojections)
       terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
@@ -74,7 +73,7 @@ void Estimator::MarginalizeOldest(bool with_prior) {
     if (options_.pose_covariance) KeepAnchoredPrior(terms, dropped);
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
-  for (const int id : restarted) features_.tracks().erase(id);
+  for (const int id : restarted) features_.EraseTrack(id);
   features_.RemoveFrame(oldest.id, CameraPoses());
   window_.pop_front();
   window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor

@@ -47,6 +47,8 @@ class FeatureManager {
   // Removes a frame's observations. A track anchored there moves its depth to its next observation's frame
   // (computed with `T_WC`, valid for both frames); tracks left without observations are erased.
   void RemoveFrame(uint64_t frame_id, const CameraPoseLookup& T_WC);
+  // Erases a track with all its observations; a later observation of the same id starts a new track.
+  void EraseTrack(int id) { tracks_.erase(id); }
   // Linear triangulation of every track without a depth and with enough observations; keeps depths within the
   // configured range.
   void Triangulate(const CameraPoseLookup& T_WC);

@@ -58,5 +58,17 @@ TEST(FeatureManagerTest, RotationCompensatedParallaxKeepsTheTranslation) {
             slide_and_turn.MeanParallax(0, 1));
 }
 
+TEST(FeatureManagerTest, AnErasedTrackStartsOverAtItsNextObservation) {
+  FeatureManager features = TwoFrames(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.3, 0.0, 0.0));
+  features.EraseTrack(2);
+  ASSERT_EQ(features.tracks().count(2), 0u);
+  ASSERT_EQ(features.tracks().size(), 3u);
+  const std::map<int, Eigen::Vector2d> c = {{1, {0.1, 0.2}}, {2, {0.3, 0.4}}};
+  EXPECT_EQ(features.AddFrame(7, c), 1);  // track 1 continues, track 2 starts over
+  EXPECT_EQ(features.tracks().at(2).anchor_frame(), 7u);
+  EXPECT_EQ(features.tracks().at(2).observations.size(), 1u);
+  EXPECT_EQ(features.tracks().at(1).observations.size(), 3u);
+}
+
 }  // namespace
 }  // namespace vigil::estimator

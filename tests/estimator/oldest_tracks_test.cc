@@ -1,12 +1,14 @@
 // What the tracks anchored in the oldest frame become when it leaves the window (OldestTracks): VINS-Mono's
 // re-anchoring uses observations the prior already holds once more, so the window claims more information
 // than restarting the tracks, which uses each observation once.
-#include <algorithm>
+#include <cstdio>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "estimator/run_estimator.h"
+#include "evaluation/statistics.h"
 #include "tests/estimator/sim_run.h"
 
 namespace vigil::estimator {
@@ -21,9 +23,7 @@ double MedianPositionVariance(OldestTracks policy, const EstimatorInput& input) 
   std::vector<double> variance;
   for (const Matrix6d& P : result.pose_covariances) variance.push_back(P.topLeftCorner<3, 3>().trace());
   EXPECT_FALSE(variance.empty());
-  if (variance.empty()) return 0.0;
-  std::nth_element(variance.begin(), variance.begin() + variance.size() / 2, variance.end());
-  return variance[variance.size() / 2];
+  return evaluation::ComputeStatistics(std::move(variance)).median;
 }
 
 TEST(OldestTracks, ReanchoringClaimsMoreInformationThanRestarting) {
