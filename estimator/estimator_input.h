@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,14 @@ struct ImuNoiseDensities {
   double gyro_bias_random_walk = 1e-5;   // [rad/s^2/sqrt(Hz)]
   double accel_bias_random_walk = 1e-4;  // [m/s^3/sqrt(Hz)]
 };
+
+// A frame's observations as the estimator takes them: track id -> normalized image point.
+inline std::map<int, Eigen::Vector2d> NormalizedFeatures(const CameraFrame& frame,
+                                                         const CameraModel& camera) {
+  std::map<int, Eigen::Vector2d> features_n;
+  for (const FeatureObservation& obs : frame.features) features_n[obs.id] = camera.Normalize(obs.uv_px);
+  return features_n;
+}
 
 struct EstimatorInput {
   ImuStream imu;  // time-ordered, the stream the estimator integrates (cleaned or raw)
@@ -47,6 +56,20 @@ struct MitigationStats {
   int gate_tests = 0;           // IMU factor chi-square tests
   int gated_factors = 0;        // failing tests (factor inflated)
   int gated_resolves = 0;       // solves repeated after gating
+};
+
+// What the IMU noise measured at rest found and what the estimator used (rest_noise.h; metrics.json
+// "estimator.imu_noise_at_rest").
+struct RestNoise {
+  double start_s = 0.0;  // start of the rest measured, from the first camera frame
+  double rest_s = 0.0;   // its length (0: no rest of at least min_rest_s)
+  double tau_s = 0.0;    // averaging time of the Allan deviation (the camera period)
+  int differences = 0;   // cluster-mean differences pooled per sensor (3 per cluster pair)
+  // Measured white-noise densities; empty without a rest or when it held fewer than 3 x 8 differences.
+  std::optional<double> gyro_noise_density;   // [rad/s/sqrt(Hz)]
+  std::optional<double> accel_noise_density;  // [m/s^2/sqrt(Hz)]
+  bool gyro_applied = false;
+  bool accel_applied = false;
 };
 
 // Wall-clock cost of the estimator's stages, summed over the run.
@@ -80,6 +103,7 @@ struct EstimatorResult {
   int marginalization_failures = 0;           // failed marginalizations: the prior was dropped each time
   EstimatorTiming timing;
   MitigationStats mitigation;
+  RestNoise rest_noise;
 };
 
 }  // namespace vigil::estimator

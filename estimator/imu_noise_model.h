@@ -21,6 +21,7 @@
 
 #include "core/config.h"
 #include "estimator/estimator_input.h"
+#include "estimator/rest_noise.h"
 
 namespace vigil::estimator {
 
@@ -48,6 +49,7 @@ struct ImuNoiseModelOptions {
   ImuNoiseModel model = ImuNoiseModel::kMatched;
   ImuNoiseDensities densities;   // model densities
   ImuNoisePerSample per_sample;  // model per_sample (defaults: VINS-Mono's EuRoC values)
+  RestNoiseOptions at_rest;  // the white noise measured at the start's rest raises the model (rest_noise.h)
 
   template <class V>
   void Visit(V& v) {
@@ -72,6 +74,7 @@ struct ImuNoiseModelOptions {
             Bounds::Positive());
     v.Field("gyr_w", per_sample.gyr_w, "model per_sample: gyro bias step std per sample [rad/s]",
             Bounds::Positive());
+    v.Section("at_rest", at_rest, "the IMU's white noise measured at the start's rest");
   }
 };
 

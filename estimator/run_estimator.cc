@@ -13,6 +13,7 @@
 #include "estimator/imu_trust.h"
 #include "estimator/init_diagnosis.h"
 #include "estimator/make_initializer.h"
+#include "estimator/rest_noise.h"
 
 namespace vigil::estimator {
 namespace {
@@ -64,9 +65,12 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   const ImuTrust trust =
       ComputeImuTrust(options.mitigation, imu, repeated ? deduplicated.flagged : input.imu_flagged);
   const double imu_rate_hz = static_cast<double>(imu.size() - 1) / NsToS(imu.back().t_ns - imu.front().t_ns);
-  Estimator estimator(options, input.camera, ResolveImuNoise(options.imu_noise, input.imu_noise, imu_rate_hz),
-                      input.gravity_mps2, imu_rate_hz, MakeInitializer(options, input));
+  ImuNoiseDensities noise = ResolveImuNoise(options.imu_noise, input.imu_noise, imu_rate_hz);
   EstimatorResult result;
+  result.rest_noise = MeasureRestNoise(imu, input.frames, input.camera, options.zero_velocity,
+                                       options.imu_noise.at_rest, &noise);
+  Estimator estimator(options, input.camera, noise, input.gravity_mps2, imu_rate_hz,
+                      MakeInitializer(options, input));
   result.mitigation.repeated_timestamps = deduplicated.repeated;
   result.mitigation.inflated_samples = trust.inflated_samples;
   result.mitigation.clipped_samples = trust.clipped_samples;
@@ -74,10 +78,8 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      std::map<int, Eigen::Vector2d> features_n;
-      for (const FeatureObservation& obs : frame.features)
-        features_n[obs.id] = input.camera.Normalize(obs.uv_px);
-      const FrameStatus status = estimator.AddFrame(frame.t_ns, features_n, imu, &trust.variance_scale);
+      const FrameStatus status =
+          estimator.AddFrame(frame.t_ns, NormalizedFeatures(frame, input.camera), imu, &trust.variance_scale);
       if (status == FrameStatus::kFailed) {
         result.ok = false;
         result.stops = 1;

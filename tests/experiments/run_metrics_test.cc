@@ -43,6 +43,18 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
   EXPECT_NE(RunSummaryLine(dropped).find(", 2 failed marginalizations (prior dropped), detector none"),
             std::string::npos)
       << RunSummaryLine(dropped);
+
+  // The IMU noise measured at rest: nothing measured is null, a measured density is written with its use.
+  EXPECT_EQ(m["estimator"]["imu_noise_at_rest"]["rest_s"], 0.0);
+  EXPECT_TRUE(m["estimator"]["imu_noise_at_rest"]["accel_noise_density"].is_null());
+  result.rest_noise.rest_s = 4.25;
+  result.rest_noise.accel_noise_density = 0.0197;
+  result.rest_noise.accel_applied = true;
+  const nlohmann::json rest = RunMetricsJson(summary, result, evaluation::TrajectoryEvaluation{}, detection);
+  EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["rest_s"], 4.25);
+  EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["accel_noise_density"], 0.0197);
+  EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["accel_applied"], true);
+  EXPECT_TRUE(rest["estimator"]["imu_noise_at_rest"]["gyro_noise_density"].is_null());
 }
 
 }  // namespace
