@@ -29,6 +29,14 @@ double MedianCameraPeriodS(const std::vector<CameraFrame>& frames, int64_t t0_ns
   return NsToS(periods[periods.size() / 2]);
 }
 
+// The rule for one sensor: `model` := `measured` when the sensor may be re-weighed and the measurement is at
+// least min_ratio times the model; true when it was.
+bool Raise(bool allowed, const std::optional<double>& measured, double min_ratio, double* model) {
+  if (!allowed || !measured || *measured < min_ratio * *model) return false;
+  *model = *measured;
+  return true;
+}
+
 }  // namespace
 
 std::optional<RestSpan> FindFirstRest(const std::vector<CameraFrame>& frames, const CameraModel& camera,
@@ -102,26 +110,15 @@ RestNoise MeasureRestNoise(const ImuStream& imu, const std::vector<CameraFrame>&
   out.start_s = NsToS(rest->t0_ns - frames.front().t_ns);
   out.rest_s = NsToS(rest->t1_ns - rest->t0_ns);
   out.tau_s = MedianCameraPeriodS(frames, rest->t0_ns, rest->t1_ns);
-  int differences = 0;
   out.gyro_noise_density =
-      AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, false, &differences);
+      AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, false, &out.differences);
   out.accel_noise_density =
-      AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, true, &differences);
-  out.differences = differences;
-  const bool gyro =
-      options.sensors == RestNoiseSensors::kGyroscope || options.sensors == RestNoiseSensors::kBoth;
-  const bool accel =
-      options.sensors == RestNoiseSensors::kAccelerometer || options.sensors == RestNoiseSensors::kBoth;
-  if (gyro && out.gyro_noise_density &&
-      *out.gyro_noise_density >= options.min_ratio * model->gyro_noise_density) {
-    model->gyro_noise_density = *out.gyro_noise_density;
-    out.gyro_applied = true;
-  }
-  if (accel && out.accel_noise_density &&
-      *out.accel_noise_density >= options.min_ratio * model->accel_noise_density) {
-    model->accel_noise_density = *out.accel_noise_density;
-    out.accel_applied = true;
-  }
+      AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, true, &out.differences);
+  const bool both = options.sensors == RestNoiseSensors::kBoth;
+  out.gyro_applied = Raise(both || options.sensors == RestNoiseSensors::kGyroscope, out.gyro_noise_density,
+                           options.min_ratio, &model->gyro_noise_density);
+  out.accel_applied = Raise(both || options.sensors == RestNoiseSensors::kAccelerometer,
+                            out.accel_noise_density, options.min_ratio, &model->accel_noise_density);
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/format.h"
 #include "evaluation/metrics_access.h"
@@ -71,17 +72,16 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                                   {"gated_factors", mit.gated_factors},
                                   {"gated_resolves", mit.gated_resolves}};
   const estimator::RestNoise& rest = result.rest_noise;
-  const auto density = [](const std::optional<double>& d) {
-    return d ? nlohmann::json(*d) : nlohmann::json();
-  };
-  m["estimator"]["imu_noise_at_rest"] = {{"start_s", rest.start_s},
-                                         {"rest_s", rest.rest_s},
-                                         {"tau_s", rest.tau_s},
-                                         {"differences", rest.differences},
-                                         {"gyro_noise_density", density(rest.gyro_noise_density)},
-                                         {"accel_noise_density", density(rest.accel_noise_density)},
-                                         {"gyro_applied", rest.gyro_applied},
-                                         {"accel_applied", rest.accel_applied}};
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  m["estimator"]["imu_noise_at_rest"] = {
+      {"start_s", rest.start_s},
+      {"rest_s", rest.rest_s},
+      {"tau_s", rest.tau_s},
+      {"differences", rest.differences},
+      {"gyro_noise_density", evaluation::NumberOrNull(rest.gyro_noise_density.value_or(kNone))},
+      {"accel_noise_density", evaluation::NumberOrNull(rest.accel_noise_density.value_or(kNone))},
+      {"gyro_applied", rest.gyro_applied},
+      {"accel_applied", rest.accel_applied}};
   m.update(evaluation::EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
   m["detection"] = detection;
   return m;
