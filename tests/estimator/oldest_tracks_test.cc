@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "estimator/pose_covariance.h"
 #include "estimator/run_estimator.h"
 #include "evaluation/statistics.h"
 #include "tests/estimator/sim_run.h"

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "estimator/pose_manifold.h"
 #include "estimator/run_estimator.h"
 #include "evaluation/nees.h"
 #include "tests/estimator/sim_run.h"
