@@ -68,8 +68,10 @@ struct RestNoise {
   // Measured white-noise densities; empty without a rest or when it held fewer than 3 x 8 differences.
   std::optional<double> gyro_noise_density;   // [rad/s/sqrt(Hz)]
   std::optional<double> accel_noise_density;  // [m/s^2/sqrt(Hz)]
-  bool gyro_applied = false;
+  bool gyro_applied = false;                  // the white-noise density replaced by the measured one
   bool accel_applied = false;
+  bool gyro_bias_walk_applied = false;  // the bias random walk scaled by measured / model white noise
+  bool accel_bias_walk_applied = false;
 };
 
 // Wall-clock cost of the estimator's stages, summed over the run.

@@ -29,11 +29,21 @@ double MedianCameraPeriodS(const std::vector<CameraFrame>& frames, int64_t t0_ns
   return NsToS(periods[periods.size() / 2]);
 }
 
-// The rule for one sensor: `model` := `measured` when the sensor may be re-weighed and the measurement is at
-// least min_ratio times the model; true when it was.
-bool Raise(bool allowed, const std::optional<double>& measured, double min_ratio, double* model) {
-  if (!allowed || !measured || *measured < min_ratio * *model) return false;
-  *model = *measured;
+// The measured / model ratio of one sensor's white noise when it is at least min_ratio (the model is plainly
+// wrong), else nothing.
+std::optional<double> Excess(const std::optional<double>& measured, double model, double min_ratio) {
+  if (!measured || *measured < min_ratio * model) return std::nullopt;
+  return *measured / model;
+}
+
+bool Includes(RestNoiseSensors set, RestNoiseSensors sensor) {
+  return set == RestNoiseSensors::kBoth || set == sensor;
+}
+
+// Sets `value` to `raised` where the sensor is in the set and exceeds its model; true when it did.
+bool Raise(bool in_set, const std::optional<double>& excess, double raised, double* value) {
+  if (!in_set || !excess) return false;
+  *value = raised;
   return true;
 }
 
@@ -102,7 +112,7 @@ RestNoise MeasureRestNoise(const ImuStream& imu, const std::vector<CameraFrame>&
                            const CameraModel& camera, const ZeroVelocityOptions& zero_velocity,
                            const RestNoiseOptions& options, ImuNoiseDensities* model) {
   RestNoise out;
-  if (options.sensors == RestNoiseSensors::kNone) return out;
+  if (options.sensors == RestNoiseSensors::kNone && options.bias_walk == RestNoiseSensors::kNone) return out;
   ZeroVelocityOptions image_test = zero_velocity;
   image_test.probability = options.probability;
   const std::optional<RestSpan> rest = FindFirstRest(frames, camera, image_test, options.min_rest_s);
@@ -114,11 +124,22 @@ RestNoise MeasureRestNoise(const ImuStream& imu, const std::vector<CameraFrame>&
       AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, false, &out.differences);
   out.accel_noise_density =
       AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, true, &out.differences);
-  const bool both = options.sensors == RestNoiseSensors::kBoth;
-  out.gyro_applied = Raise(both || options.sensors == RestNoiseSensors::kGyroscope, out.gyro_noise_density,
-                           options.min_ratio, &model->gyro_noise_density);
-  out.accel_applied = Raise(both || options.sensors == RestNoiseSensors::kAccelerometer,
-                            out.accel_noise_density, options.min_ratio, &model->accel_noise_density);
+  const std::optional<double> gyro_excess =
+      Excess(out.gyro_noise_density, model->gyro_noise_density, options.min_ratio);
+  const std::optional<double> accel_excess =
+      Excess(out.accel_noise_density, model->accel_noise_density, options.min_ratio);
+  const RestNoiseSensors gyro = RestNoiseSensors::kGyroscope, accel = RestNoiseSensors::kAccelerometer;
+  // White noise: the measured density itself; bias walk: the model's times the measured ratio.
+  out.gyro_applied = Raise(Includes(options.sensors, gyro), gyro_excess, out.gyro_noise_density.value_or(0.0),
+                           &model->gyro_noise_density);
+  out.accel_applied = Raise(Includes(options.sensors, accel), accel_excess,
+                            out.accel_noise_density.value_or(0.0), &model->accel_noise_density);
+  out.gyro_bias_walk_applied =
+      Raise(Includes(options.bias_walk, gyro), gyro_excess,
+            gyro_excess.value_or(0.0) * model->gyro_bias_random_walk, &model->gyro_bias_random_walk);
+  out.accel_bias_walk_applied =
+      Raise(Includes(options.bias_walk, accel), accel_excess,
+            accel_excess.value_or(0.0) * model->accel_bias_random_walk, &model->accel_bias_random_walk);
   return out;
 }
 

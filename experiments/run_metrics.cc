@@ -81,7 +81,9 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
       {"gyro_noise_density", evaluation::NumberOrNull(rest.gyro_noise_density.value_or(kNone))},
       {"accel_noise_density", evaluation::NumberOrNull(rest.accel_noise_density.value_or(kNone))},
       {"gyro_applied", rest.gyro_applied},
-      {"accel_applied", rest.accel_applied}};
+      {"accel_applied", rest.accel_applied},
+      {"gyro_bias_walk_applied", rest.gyro_bias_walk_applied},
+      {"accel_bias_walk_applied", rest.accel_bias_walk_applied}};
   m.update(evaluation::EvaluationJson(evaluation));  // "ate", "relative", "coverage", "gt_length_m"
   m["detection"] = detection;
   return m;

@@ -163,5 +163,49 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   EXPECT_EQ(off.accel_noise_density, kAccelDensity);
 }
 
+TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
+  CameraModel camera;
+  const std::vector<CameraFrame> frames = Frames(13, 8.0, {}, 5.0);
+  ImuNoiseDensities model;
+  model.gyro_noise_density = kGyroDensity;
+  model.accel_noise_density = kAccelDensity;
+  const ImuStream noisy = StillImu(15, 8.0, 5 * kGyroDensity, 5 * kAccelDensity);
+  RestNoiseOptions options;
+  options.sensors = RestNoiseSensors::kNone;
+  options.bias_walk = RestNoiseSensors::kGyroscope;
+
+  // The gyroscope's bias walk grows by the measured ratio (about 5); its white noise and the accelerometer
+  // keep the model.
+  ImuNoiseDensities walk = model;
+  const RestNoise gyro = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &walk);
+  ASSERT_TRUE(gyro.gyro_noise_density);
+  EXPECT_TRUE(gyro.gyro_bias_walk_applied);
+  EXPECT_FALSE(gyro.gyro_applied || gyro.accel_applied || gyro.accel_bias_walk_applied);
+  EXPECT_DOUBLE_EQ(walk.gyro_bias_random_walk / model.gyro_bias_random_walk,
+                   *gyro.gyro_noise_density / kGyroDensity);
+  EXPECT_NEAR(walk.gyro_bias_random_walk / model.gyro_bias_random_walk, 5.0, 0.5);
+  EXPECT_EQ(walk.gyro_noise_density, kGyroDensity);
+  EXPECT_EQ(walk.accel_bias_random_walk, model.accel_bias_random_walk);
+  EXPECT_EQ(walk.accel_noise_density, kAccelDensity);
+
+  // With white noise and bias walk both chosen for both sensors, each sensor gets both.
+  options.sensors = options.bias_walk = RestNoiseSensors::kBoth;
+  ImuNoiseDensities all = model;
+  const RestNoise both = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &all);
+  EXPECT_TRUE(both.gyro_applied && both.accel_applied && both.gyro_bias_walk_applied &&
+              both.accel_bias_walk_applied);
+  EXPECT_NEAR(all.accel_bias_random_walk / model.accel_bias_random_walk, 5.0, 0.5);
+  EXPECT_EQ(all.accel_noise_density, *both.accel_noise_density);
+  EXPECT_DOUBLE_EQ(all.accel_bias_random_walk / model.accel_bias_random_walk,
+                   *both.accel_noise_density / kAccelDensity);
+
+  // A sensor that fits its model keeps its bias walk.
+  ImuNoiseDensities fits = model;
+  const RestNoise fit = MeasureRestNoise(StillImu(14, 8.0, kGyroDensity, kAccelDensity), frames, camera,
+                                         ZeroVelocityOptions{}, options, &fits);
+  EXPECT_FALSE(fit.gyro_bias_walk_applied || fit.accel_bias_walk_applied);
+  EXPECT_EQ(fits.gyro_bias_random_walk, model.gyro_bias_random_walk);
+}
+
 }  // namespace
 }  // namespace vigil::estimator

@@ -50,10 +50,13 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
   result.rest_noise.rest_s = 4.25;
   result.rest_noise.accel_noise_density = 0.0197;
   result.rest_noise.accel_applied = true;
+  result.rest_noise.gyro_bias_walk_applied = true;
   const nlohmann::json rest = RunMetricsJson(summary, result, evaluation::TrajectoryEvaluation{}, detection);
   EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["rest_s"], 4.25);
   EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["accel_noise_density"], 0.0197);
   EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["accel_applied"], true);
+  EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["gyro_bias_walk_applied"], true);
+  EXPECT_EQ(rest["estimator"]["imu_noise_at_rest"]["accel_bias_walk_applied"], false);
   EXPECT_TRUE(rest["estimator"]["imu_noise_at_rest"]["gyro_noise_density"].is_null());
 }
 
