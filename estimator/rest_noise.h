@@ -23,7 +23,7 @@
 //             much). Gyroscope and accelerometer are judged separately.
 // The defaults (the accelerometer's white noise; no bias walk) follow the ablation in docs/estimator.md.
 // `bias_walk: gyroscope` lowers the ATE of the whole semi-real V1_01 flight by a fifth but doubles the yaw
-// drift of its first 30 s, so it is a variant, not the default.
+// drift on the semi-real gate's 30 s excerpt, so it is a variant, not the default.
 // The rest is measured before the estimator starts, as a system calibrates on the ground before it moves: the
 // frames before the end of the rest use a density measured over the whole rest. On EuRoC V1_01 that rest
 // starts within the first second (the platform shifts once at 0.75 s) and lasts until take-off at 5.3 s.
