@@ -19,6 +19,14 @@ constexpr double kAccelDensity = 2.0e-3;  // [m/s^2/sqrt(Hz)]
 
 int64_t SecondsToNs(double t_s) { return static_cast<int64_t>(std::llround(t_s * 1e9)); }
 
+// The noise model at the datasheet's white noise (the bias walks as ImuNoiseDensities has them).
+ImuNoiseDensities DatasheetModel() {
+  ImuNoiseDensities model;
+  model.gyro_noise_density = kGyroDensity;
+  model.accel_noise_density = kAccelDensity;
+  return model;
+}
+
 // A still IMU over [0, duration_s]: biases and gravity, white noise of the given densities, plus a vibration
 // of `vibration_mps2` amplitude at 67 Hz on every accelerometer axis.
 ImuStream StillImu(uint64_t seed, double duration_s, double gyro_density, double accel_density,
@@ -120,9 +128,7 @@ TEST(RestNoise, TheFirstRestLongEnoughIsFound) {
 TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   CameraModel camera;
   const std::vector<CameraFrame> frames = Frames(13, 8.0, {}, 5.0);
-  ImuNoiseDensities model;
-  model.gyro_noise_density = kGyroDensity;
-  model.accel_noise_density = kAccelDensity;
+  const ImuNoiseDensities model = DatasheetModel();
   RestNoiseOptions options;
   options.sensors = RestNoiseSensors::kBoth;
 
@@ -166,9 +172,7 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
 TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
   CameraModel camera;
   const std::vector<CameraFrame> frames = Frames(13, 8.0, {}, 5.0);
-  ImuNoiseDensities model;
-  model.gyro_noise_density = kGyroDensity;
-  model.accel_noise_density = kAccelDensity;
+  const ImuNoiseDensities model = DatasheetModel();
   const ImuStream noisy = StillImu(15, 8.0, 5 * kGyroDensity, 5 * kAccelDensity);
   RestNoiseOptions options;
   options.sensors = RestNoiseSensors::kNone;
