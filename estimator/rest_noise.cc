@@ -29,22 +29,24 @@ double MedianCameraPeriodS(const std::vector<CameraFrame>& frames, int64_t t0_ns
   return NsToS(periods[periods.size() / 2]);
 }
 
-// The measured / model ratio of one sensor's white noise when it is at least min_ratio (the model is plainly
-// wrong), else nothing.
-std::optional<double> Excess(const std::optional<double>& measured, double model, double min_ratio) {
-  if (!measured || *measured < min_ratio * model) return std::nullopt;
-  return *measured / model;
-}
-
 bool Includes(RestNoiseSensors set, RestNoiseSensors sensor) {
   return set == RestNoiseSensors::kBoth || set == sensor;
 }
 
-// Sets `value` to `raised` where the sensor is in the set and exceeds its model; true when it did.
-bool Raise(bool in_set, const std::optional<double>& excess, double raised, double* value) {
-  if (!in_set || !excess) return false;
-  *value = raised;
-  return true;
+struct Applied {
+  bool white_noise = false;
+  bool bias_walk = false;
+};
+
+// The rule for one sensor: where `measured` is at least min_ratio times the model's white noise, the bias
+// walk (when `walk`) is multiplied by measured / model, and the white noise (when `white`) becomes
+// `measured`.
+Applied Apply(const std::optional<double>& measured, double min_ratio, bool white, bool walk,
+              double* white_noise, double* bias_walk) {
+  if (!measured || *measured < min_ratio * *white_noise) return {};
+  if (walk) *bias_walk *= *measured / *white_noise;  // before the white noise changes
+  if (white) *white_noise = *measured;
+  return {white, walk};
 }
 
 }  // namespace
@@ -124,22 +126,17 @@ RestNoise MeasureRestNoise(const ImuStream& imu, const std::vector<CameraFrame>&
       AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, false, &out.differences);
   out.accel_noise_density =
       AllanWhiteNoiseDensity(imu, rest->t0_ns, rest->t1_ns, out.tau_s, true, &out.differences);
-  const std::optional<double> gyro_excess =
-      Excess(out.gyro_noise_density, model->gyro_noise_density, options.min_ratio);
-  const std::optional<double> accel_excess =
-      Excess(out.accel_noise_density, model->accel_noise_density, options.min_ratio);
   const RestNoiseSensors gyro = RestNoiseSensors::kGyroscope, accel = RestNoiseSensors::kAccelerometer;
-  // White noise: the measured density itself; bias walk: the model's times the measured ratio.
-  out.gyro_applied = Raise(Includes(options.sensors, gyro), gyro_excess, out.gyro_noise_density.value_or(0.0),
-                           &model->gyro_noise_density);
-  out.accel_applied = Raise(Includes(options.sensors, accel), accel_excess,
-                            out.accel_noise_density.value_or(0.0), &model->accel_noise_density);
-  out.gyro_bias_walk_applied =
-      Raise(Includes(options.bias_walk, gyro), gyro_excess,
-            gyro_excess.value_or(0.0) * model->gyro_bias_random_walk, &model->gyro_bias_random_walk);
-  out.accel_bias_walk_applied =
-      Raise(Includes(options.bias_walk, accel), accel_excess,
-            accel_excess.value_or(0.0) * model->accel_bias_random_walk, &model->accel_bias_random_walk);
+  const Applied g =
+      Apply(out.gyro_noise_density, options.min_ratio, Includes(options.sensors, gyro),
+            Includes(options.bias_walk, gyro), &model->gyro_noise_density, &model->gyro_bias_random_walk);
+  const Applied a =
+      Apply(out.accel_noise_density, options.min_ratio, Includes(options.sensors, accel),
+            Includes(options.bias_walk, accel), &model->accel_noise_density, &model->accel_bias_random_walk);
+  out.gyro_applied = g.white_noise;
+  out.gyro_bias_walk_applied = g.bias_walk;
+  out.accel_applied = a.white_noise;
+  out.accel_bias_walk_applied = a.bias_walk;
   return out;
 }
 

@@ -56,7 +56,7 @@ struct RestNoiseOptions {
   RestNoiseSensors sensors = RestNoiseSensors::kAccelerometer;  // white noise := measured
   RestNoiseSensors bias_walk = RestNoiseSensors::kNone;         // bias random walk x measured / model
   double min_rest_s = 2.0;                                      // a shorter rest measures nothing
-  double min_ratio = 2.0;  // measured / model density at which the measurement replaces the model
+  double min_ratio = 2.0;  // measured / model density at which the measurement raises the model
   // Chi-square quantile of the image test that finds the rest: far out in the tail, so that one noisy
   // interval in a hundred does not end the rest (a platform that moves fails the test by orders of
   // magnitude).
@@ -76,8 +76,8 @@ struct RestNoiseOptions {
             "at_rest: shortest rest that is measured (the first one this long counts) [s]",
             Bounds::Positive());
     v.Field("min_ratio", min_ratio,
-            "at_rest: a measured noise density replaces the model's when it is at least this many times "
-            "as large",
+            "at_rest: a measured noise density raises the model (sensors, bias_walk) when it is at least "
+            "this many times the model's",
             Bounds::AtLeast(1.0));
     v.Field("probability", probability,
             "at_rest: chi-square quantile of the image test that finds the rest (zero_velocity.pixel_std_px "

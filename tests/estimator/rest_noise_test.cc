@@ -196,6 +196,7 @@ TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
   options.sensors = options.bias_walk = RestNoiseSensors::kBoth;
   ImuNoiseDensities all = model;
   const RestNoise both = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &all);
+  ASSERT_TRUE(both.accel_noise_density);
   EXPECT_TRUE(both.gyro_applied && both.accel_applied && both.gyro_bias_walk_applied &&
               both.accel_bias_walk_applied);
   EXPECT_NEAR(all.accel_bias_random_walk / model.accel_bias_random_walk, 5.0, 0.5);
