@@ -140,7 +140,11 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     const bool ok = TryInitialize();
     timing_.initialize_s += SecondsSince(start);
     if (!ok) {
-      Slide(keyframe, /*with_prior=*/false);
+      // A still platform makes no keyframes, so a window that held motion before the rest would keep that
+      // motion's frames as long as the rest lasts, and the static start would never see a still window.
+      // While the newest interval is still, the oldest frame leaves instead.
+      const bool still_now = options_.zero_velocity.static_init && window_.back()->stationary;
+      Slide(keyframe || still_now, /*with_prior=*/false);
       return FrameStatus::kWaitingForInit;
     }
   }

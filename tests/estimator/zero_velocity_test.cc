@@ -8,6 +8,7 @@
 
 #include "core/random.h"
 #include "core/so3.h"
+#include "estimator/estimator.h"
 #include "estimator/run_estimator.h"
 #include "estimator/static_initializer.h"
 #include "estimator/zero_velocity_detector.h"
@@ -143,6 +144,51 @@ TEST(StaticInitializerTest, StillWindowGivesTiltAndGyroBias) {
     // 100 samples of 2.4e-3 rad/s noise: the mean is within 3e-4 rad/s (about 1.2 std per axis).
     EXPECT_LT((s.b_g - Eigen::Vector3d(0.002, -0.01, 0.077)).norm(), 1e-3);
   }
+}
+
+// An initializer that never succeeds: only the static start can initialize.
+class NeverInitializes : public Initializer {
+ public:
+  bool TryInitialize(const std::vector<InitFrame>&, InitResult* result) override {
+    result->failure_reason = "never";
+    return false;
+  }
+  bool CanReinitialize() const override { return true; }
+};
+
+// A platform that stands still, shifts once before the window is full (as V1_01 does at 0.75 s), and stands
+// still again: the static start must find a still window once the shift has left it. A still platform makes
+// no keyframes, so without the rule that drops the oldest frame while the newest interval is still, the
+// shift's frames stayed in the window for the whole rest and the static start never came.
+TEST(ZeroVelocityRunTest, StaticStartAfterAShiftDuringTheRest) {
+  Rng rng(6, "static_after_shift");
+  std::map<int, Eigen::Vector2d> before, unused;
+  SharedFeatures(rng, 60, 0.0, 0.0, &before, &unused);
+  std::map<int, Eigen::Vector2d> after = before;  // the same features 30 px to the side
+  for (auto& [id, n] : after) n.x() += 30.0 / kTestFx;
+  CameraModel camera;
+  camera.fx = camera.fy = kTestFx;
+  EstimatorOptions options;  // window of 15, static start on, image test at 0.5 px
+  ASSERT_TRUE(options.zero_velocity.static_init);
+  auto initializer = std::make_unique<StaticInitializer>(std::make_unique<NeverInitializes>(),
+                                                         options.zero_velocity, kTestFx);
+  Estimator estimator(options, camera, ZuptNoise(), 9.81, kTestImuRateHz, std::move(initializer));
+  // 200 Hz of a level platform at rest (no noise), 20 Hz of frames; the shift between frames 4 and 5.
+  constexpr int64_t kFramePeriodNs = 50'000'000;
+  constexpr int kShiftFrame = 5, kFrames = 80;
+  ImuStream imu;
+  for (int64_t t_ns = 0; t_ns <= kFrames * kFramePeriodNs; t_ns += 5'000'000)
+    imu.push_back({t_ns, Eigen::Vector3d(0.0, 0.0, 0.01), Eigen::Vector3d(0.0, 0.0, 9.81)});
+  int first_tracking = -1;
+  for (int k = 0; k < kFrames && first_tracking < 0; ++k) {
+    const FrameStatus status = estimator.AddFrame(k * kFramePeriodNs, k < kShiftFrame ? before : after, imu);
+    ASSERT_NE(status, FrameStatus::kFailed) << estimator.failure_reason();
+    if (status == FrameStatus::kTracking) first_tracking = k;
+  }
+  // The first still window after the shift: its window.size + 1 frames from frame 5 on.
+  ASSERT_GE(first_tracking, 0) << "the static start never came";
+  EXPECT_EQ(first_tracking, kShiftFrame + options.window.size);
+  EXPECT_NEAR(estimator.newest_state().b_g.z(), 0.01, 1e-6);
 }
 
 // The IMU simulated along EuRoC V1_01, which stands still for its first 5.3 s: with a static start the
