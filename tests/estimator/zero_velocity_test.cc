@@ -162,10 +162,8 @@ class NeverInitializes : public Initializer {
 // shift's frames stayed in the window for the whole rest and the static start never came.
 TEST(ZeroVelocityRunTest, StaticStartAfterAShiftDuringTheRest) {
   Rng rng(6, "static_after_shift");
-  std::map<int, Eigen::Vector2d> before, unused;
-  SharedFeatures(rng, 60, 0.0, 0.0, &before, &unused);
-  std::map<int, Eigen::Vector2d> after = before;  // the same features 30 px to the side
-  for (auto& [id, n] : after) n.x() += 30.0 / kTestFx;
+  std::map<int, Eigen::Vector2d> before, after;  // the same features, then 30 px to the side
+  SharedFeatures(rng, 60, 0.0, 30.0, &before, &after);
   CameraModel camera;
   camera.fx = camera.fy = kTestFx;
   EstimatorOptions options;  // window of 15, static start on, image test at 0.5 px
