@@ -51,6 +51,9 @@ enum class FrameStatus {
 
 class Estimator {
  public:
+  // Benchmarks time the stages of one frame on a fixed window through it (bench/estimator_stages.h).
+  friend class EstimatorStages;
+
   Estimator(const EstimatorOptions& options, const CameraModel& camera, const ImuNoiseDensities& noise,
             double gravity_mps2, double imu_rate_hz, std::unique_ptr<Initializer> initializer);
   ~Estimator();
@@ -139,6 +142,16 @@ class Estimator {
   Failure DetectFailure(const NavState& previous) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
+  // The factors that involve the oldest frame (window size >= 2), what its marginalization eliminates (its
+  // states and the depths of the usable tracks anchored in it) and those tracks' ids; `costs` owns the
+  // factors built for it.
+  struct OldestFrameTerms {
+    std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+    std::vector<MarginalizationTerm> terms;
+    DroppedBlocks dropped;
+    std::vector<int> tracks;
+  };
+  OldestFrameTerms TermsOfOldest();
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
   // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
