@@ -58,10 +58,10 @@ void OnWindow(benchmark::State& state, const Window& window,
   if (!reached) state.SkipWithError("the run ended before the window");
 }
 
-void BM_Solve(benchmark::State& state, const Window& window) {
+void BM_Solve(benchmark::State& state, const Window& window, SolverBackend backend) {
   OnWindow(state, window, [&](EstimatorStages& stages) {
     for (auto _ : state)
-      if (!stages.Solve()) state.SkipWithError("the solve failed");
+      if (!stages.Solve(backend)) state.SkipWithError("the solve failed");
   });
 }
 
@@ -79,10 +79,12 @@ void BM_Marginalize(benchmark::State& state, const Window& window) {
   });
 }
 
-BENCHMARK_CAPTURE(BM_Solve, paper, kPaper)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, paper_dense, kPaper, SolverBackend::kDense)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, paper_ceres, kPaper, SolverBackend::kCeres)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, paper, kPaper)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, paper, kPaper)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Solve, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, semireal_dense, kSemiReal, SolverBackend::kDense)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, semireal_ceres, kSemiReal, SolverBackend::kCeres)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
 

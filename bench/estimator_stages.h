@@ -33,11 +33,12 @@ class EstimatorStages {
     return n;
   }
 
-  // The window's solve from the saved states; false when the solver fails.
-  bool Solve() {
+  // The window's solve by `backend` from the saved states; false when the solver fails.
+  bool Solve(SolverBackend backend) {
     Restore();
     std::string reason;
-    return e_.Optimize(/*marginalize_oldest_next=*/true, &reason);
+    return backend == SolverBackend::kDense ? e_.OptimizeDense(/*marginalize_oldest_next=*/true, &reason)
+                                            : e_.Optimize(/*marginalize_oldest_next=*/true, &reason);
   }
   std::optional<Matrix6d> Covariance() { return e_.NewestPoseCovariance(); }
   // The prior that marginalizing the oldest frame would keep; false when it fails.

@@ -119,6 +119,17 @@ class Estimator {
   // Zero-velocity factors on the stationary intervals (zero_velocity_factor.h), when the update is on or a
   // static start is held.
   void AddZeroVelocityFactors(WindowProblem* w);
+  // The window's IMU factors and zero-velocity factors over `speed_bias` (frame k's block or a solve's copy
+  // of it), in the order a solve adds them; `costs` owns them.
+  void AppendImuTerms(const std::vector<double*>& speed_bias,
+                      std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                      std::vector<ImuTerm>* imu_terms);
+  void AppendZeroVelocityTerms(const std::vector<double*>& speed_bias,
+                               std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                               std::vector<MarginalizationTerm>* terms);
+  // The window's solve by the dense Levenberg-Marquardt of dense_window_solver.h (SolverOptions::backend:
+  // dense), with the factors of Optimize; false with a reason when it fails (estimator_optimize_dense.cc).
+  bool OptimizeDense(bool marginalize_oldest_next, std::string* reason);
   bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
   // Whether a new frame's interval must be tested for standing still: for the update, and for a static start
   // (the window before initialization, and while it is held still). The flags are read nowhere else.
@@ -130,7 +141,7 @@ class Estimator {
   void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
                                      std::vector<MarginalizationTerm>* terms);
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
-  ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
+  ceres::Solver::Summary SolveAndGate(ceres::Solver::Options solver_options, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
   // A failure check that fired: its name (failure_checks()) and what it saw; `check` empty when none did.
   struct Failure {

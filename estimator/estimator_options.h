@@ -162,7 +162,12 @@ struct FeatureOptions {
   }
 };
 
+// The window's solver: Ceres (DENSE_SCHUR, DOGLEG: VINS-Mono's) or vigil's dense Levenberg-Marquardt over the
+// window with the depths eliminated (dense_window_solver.h), with the same factors and stopping rules.
+enum class SolverBackend { kCeres, kDense };
+
 struct SolverOptions {
+  SolverBackend backend = SolverBackend::kDense;
   int max_iterations = 8;  // trust-region iterations per solve (VINS-Mono's value)
   // A solve ends after this many accepted trust-region steps (0: only max_iterations, the function tolerance
   // and the time limit end it). The window is re-solved at every camera frame and a keyframe stays in it for
@@ -191,6 +196,11 @@ struct SolverOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
+    v.Enum(
+        "backend", backend,
+        config::EnumNames<SolverBackend>{{"ceres", SolverBackend::kCeres}, {"dense", SolverBackend::kDense}},
+        "the window's solver: ceres (DENSE_SCHUR, DOGLEG) or dense (vigil's Levenberg-Marquardt over the "
+        "window with the depths eliminated)");
     v.Field("max_iterations", max_iterations, "Ceres iterations per solve (DENSE_SCHUR, DOGLEG)",
             Bounds::AtLeast(1));
     v.Field("accepted_steps", accepted_steps,

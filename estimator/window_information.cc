@@ -73,13 +73,25 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
   return true;
 }
 
+double WindowInformation::EliminatedDepth::Coupling(const Eigen::VectorXd& dx) const {
+  double coupling = b_d;
+  for (const auto& [column, w_p] : w) coupling += w_p.dot(dx.segment<kPose>(column));
+  return coupling;
+}
+
 bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* last,
-                                 const ceres::LossFunction* loss, double eigen_threshold) {
+                                 const ceres::LossFunction* loss, double eigen_threshold,
+                                 EliminatedDepth* depth) {
+  EliminatedDepth local;
+  EliminatedDepth& d = depth ? *depth : local;
+  d.h_dd = 0.0;
+  d.b_d = 0.0;
+  d.w.clear();
   if (first == last) return true;
   // The depth's row of the information: its pivot h_dd, gradient b_d and coupling w to each pose the track
   // involves (its anchor first, then one observing pose per reprojection, each a different frame).
   double h_dd = 0.0, b_d = 0.0;
-  std::vector<std::pair<int, Vector6d>> w;  // (pose column, d^2 cost / d pose d depth)
+  std::vector<std::pair<int, Vector6d>>& w = d.w;  // (pose column, d^2 cost / d pose d depth)
   w.reserve(static_cast<std::size_t>(last - first) + 1);
   const int anchor = ColumnOf(first->blocks[0]).column;
   if (anchor < 0) return false;
@@ -114,6 +126,8 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
   }
   // The depth eliminated: H -= w w^T / h_dd, g -= w b_d / h_dd over the track's poses.
   if (!(h_dd > eigen_threshold)) return true;
+  d.h_dd = h_dd;
+  d.b_d = b_d;
   for (const auto& [column_p, w_p] : w) {
     const Vector6d f = w_p / h_dd;
     g_.segment<kPose>(column_p) -= f * b_d;

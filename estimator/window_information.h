@@ -42,12 +42,22 @@ class WindowInformation {
     const ReprojectionFactor* factor;
     std::array<double*, 3> blocks;
   };
+  // The eliminated depth's row of the information: its pivot h_dd (0 when the depth was left out), its
+  // gradient b_d and its coupling w_p to each pose p of the track, so that its Gauss-Newton step given the
+  // states' step dx is d depth = -(b_d + sum_p w_p^T dx_p) / h_dd.
+  struct EliminatedDepth {
+    double h_dd = 0.0;
+    double b_d = 0.0;
+    std::vector<std::pair<int, Eigen::Matrix<double, kPoseTangentSize, 1>>> w;  // (pose column, w_p)
+    // b_d + sum_p w_p^T dx_p.
+    double Coupling(const Eigen::VectorXd& dx) const;
+  };
   // Adds every reprojection of one track (all over the same inverse depth, each with `loss`) and eliminates
   // the depth: a pivot at or below `eigen_threshold` counts as no information, and the depth's rows are then
-  // left out (as marginalization.h does). False when a factor fails, a pose is not the window's, or the
-  // numbers are not finite.
+  // left out (as marginalization.h does). `depth` (may be null) receives the depth's row. False when a
+  // factor fails, a pose is not the window's, or the numbers are not finite.
   bool AddTrack(const Reprojection* first, const Reprojection* last, const ceres::LossFunction* loss,
-                double eigen_threshold);
+                double eigen_threshold, EliminatedDepth* depth = nullptr);
   // Adds a linear prior at its blocks' current values (PriorInformationAtCurrentValues). False when one of
   // its blocks is not the window's.
   bool AddPrior(const LinearPrior& prior);
