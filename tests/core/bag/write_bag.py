@@ -8,6 +8,7 @@ another type, stamps that go back, a topic of another definition.
 
   write_bag.py MAV0 BAG [--encoding E] [--groundtruth TYPE] [--swap-imu K] [--compression C]
                         [--imu-topic T] [--image-topic T] [--groundtruth-topic T] [--imu-other-definition]
+                        [--seconds S]
 """
 import argparse
 import csv
@@ -64,6 +65,11 @@ def rows(path):
         return [r for r in csv.reader(f) if r and not r[0].startswith("#")]
 
 
+def until(table, end_ns):
+    """The rows of `table` stamped before end_ns (all of them when it is None)."""
+    return table if end_ns is None else [r for r in table if int(r[0]) < end_ns]
+
+
 def read_pgm(path):
     data = open(path, "rb").read()
     fields, at = [], 0
@@ -105,6 +111,8 @@ def main():
     p.add_argument("--groundtruth-topic", default="/vicon/firefly_sbx/firefly_sbx")
     p.add_argument("--imu-other-definition", action="store_true",
                    help="sensor_msgs/Imu with another definition (another MD5)")
+    p.add_argument("--seconds", type=float, default=0.0,
+                   help="only the messages of the first S seconds (0: all); short bags write fast")
     a = p.parse_args()
 
     imu_definition = None
@@ -115,6 +123,8 @@ def main():
     records = []  # (record time [ns], topic, message)
 
     imu = rows(os.path.join(a.mav0, "imu0", "data.csv"))
+    end_ns = int(imu[0][0]) + int(a.seconds * 1e9) if a.seconds > 0 else None
+    imu = until(imu, end_ns)
     times = [int(r[0]) for r in imu]
     if a.swap_imu >= 0:
         times[a.swap_imu], times[a.swap_imu + 1] = times[a.swap_imu + 1], times[a.swap_imu]
@@ -127,7 +137,7 @@ def main():
         records.append((int(r[0]), a.imu_topic, m))
 
     cam = os.path.join(a.mav0, "cam0")
-    for k, r in enumerate(rows(os.path.join(cam, "data.csv"))):
+    for k, r in enumerate(until(rows(os.path.join(cam, "data.csv")), end_ns)):
         t = int(r[0])
         width, height, gray = read_pgm(os.path.join(cam, "data", r[1].replace(".png", ".pgm")))
         m = Image()
@@ -140,7 +150,8 @@ def main():
         kind = {"transform": "geometry_msgs/TransformStamped", "pose": "geometry_msgs/PoseStamped",
                 "odometry": "nav_msgs/Odometry", "point": "geometry_msgs/PointStamped"}[a.groundtruth]
         Pose = message_class(kind)
-        for k, r in enumerate(rows(os.path.join(a.mav0, "state_groundtruth_estimate0", "data.csv"))):
+        gt = until(rows(os.path.join(a.mav0, "state_groundtruth_estimate0", "data.csv")), end_ns)
+        for k, r in enumerate(gt):
             t = int(r[0])
             p_w, (qw, qx, qy, qz), v_w = list(map(float, r[1:4])), map(float, r[4:8]), map(float, r[8:11])
             m = Pose()
