@@ -75,6 +75,7 @@ int main(int argc, char** argv) {
   AddTemplatesCommand(root);
   AddCleanCommand(root);
   AddInjectCommand(root);
+  AddImportCommand(root);
   AddTrackCommand(root);
   AddRunCommand(root);
   AddEstimateCommand(root);

@@ -51,11 +51,12 @@ struct TrajectoryOptions {
         "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
         "waypoints (C2 spline through timed poses), recording (B-spline fitted to a recorded ground truth)");
     v.Field("waypoints_file", waypoints_file,
-            "timed pose CSV for type waypoints (relative to the config file; see configs/README.md)");
+            "timed pose CSV for type waypoints (relative to the config file, or $VIGIL_DATA/...; see "
+            "configs/README.md)");
     v.Field("recording", recording,
             "ground truth for type recording: EuRoC state_groundtruth_estimate0/data.csv (or its mav0 folder "
-            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file; see "
-            "docs/recordings-trajectory.md)");
+            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file, or "
+            "$VIGIL_DATA/...; see docs/recordings-trajectory.md)");
     v.Section("spline", spline, "the spline fitted to a recording (type recording)");
   }
 };
@@ -181,7 +182,8 @@ struct ImuOptions {
            "camera tracks synthesized along its ground truth (a semi-real dataset, docs/recordings.md)");
     v.Field("recording", recording,
             "recording for source recording: a EuRoC folder (holding mav0/, or mav0/ itself) or a vigil "
-            "dataset, with ground truth and a camera (relative to the config file)");
+            "dataset, with ground truth and a camera (relative to the config file, or $VIGIL_DATA/...: "
+            "inside the folder the environment variable VIGIL_DATA names, docs/datasets.md)");
     v.Field("recording_start_s", recording_start_s,
             "source recording: start of the semi-real window after the first ground-truth row [s]; the "
             "window lasts duration_s",
@@ -262,7 +264,9 @@ struct SimOptions {
 
 // Makes a relative trajectory.waypoints_file, trajectory.recording or imu.recording absolute, relative to
 // `base_dir` (the config file's directory for paths read from a file, the working directory for --set
-// values), so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
+// values), so a written config.yaml works from anywhere. "$VIGIL_DATA/..." becomes a path in the folder the
+// environment variable names (core/data_dir.h; left as it is while VIGIL_DATA is unset, which
+// ValidateSimOptions refuses). Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
 // duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the

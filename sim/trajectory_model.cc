@@ -1,5 +1,6 @@
 #include "sim/trajectory_model.h"
 
+#include "core/data_dir.h"
 #include "core/error.h"
 #include "sim/ellipse_trajectory.h"
 #include "sim/recorded_trajectory.h"
@@ -9,8 +10,9 @@
 namespace vigil::sim {
 
 void ResolveDurationToEnd(SimOptions* options) {
-  if (options->duration_s != 0.0) return;
   const TrajectoryOptions& t = options->trajectory;
+  // An unset $VIGIL_DATA: nothing to read, ValidateSimOptions says why.
+  if (options->duration_s != 0.0 || NamesDataDir(t.waypoints_file) || NamesDataDir(t.recording)) return;
   try {
     if (t.type == TrajectoryType::kWaypoints && !t.waypoints_file.empty()) {
       const std::vector<Waypoint> w = ReadWaypoints(t.waypoints_file);

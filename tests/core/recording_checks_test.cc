@@ -96,7 +96,17 @@ TEST(ReferenceImu, PrefersTheCleanStreamOfADataset) {
             std::string::npos);
 }
 
-// The shared real recording (../shared/data beside the repository) passes every check.
+// The committed excerpt passes every check; it lists its camera's times without the images.
+TEST(SharedEuroc, V1_01ExcerptPassesTheRecordingChecks) {
+  const fs::path dir = fs::path(VIGIL_SOURCE_DIR) / "data" / "euroc_v1_01_excerpt";
+  const Recording recording = ReadRecording(dir, /*check_image_files=*/false);
+  EXPECT_EQ(recording.dataset.imu.size(), 6001u);
+  EXPECT_EQ(recording.dataset.groundtruth.size(), 601u);
+  EXPECT_EQ(recording.images.size(), 95u);
+  EXPECT_NE(InputErrorOf([&] { ReadRecording(dir); }).find("image file is missing"), std::string::npos);
+}
+
+// The whole flight (beside the repository where the development machine has it) passes every check.
 TEST(SharedEuroc, V1_01PassesTheRecordingChecks) {
   const fs::path dir = fs::path(VIGIL_SOURCE_DIR) / ".." / "shared" / "data" / "euroc_v1_01";
   if (!fs::is_directory(dir / "mav0")) GTEST_SKIP() << dir << " is absent";

@@ -69,6 +69,32 @@ TEST(RunConfig, CrossKeyChecksNameTheLineOrTheSet) {
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(axes); }), axes + ":3: glitch.axes: axis az listed twice");
 }
 
+// A path under $VIGIL_DATA is read inside the folder the variable names; unset, the line or --set that used
+// it is named with the variable.
+TEST(RunConfig, VigilDataPathsNeedTheVariable) {
+  TempDir dir;
+  const std::string path =
+      dir.File("c.yaml", "seed: 1\nimu:\n  source: recording\n  recording: $VIGIL_DATA/euroc/V1_01_easy\n");
+  const std::string reason =
+      "names $VIGIL_DATA, which is not set: export VIGIL_DATA=the folder that holds your datasets "
+      "(docs/datasets.md)";
+  {
+    const vigil::testing::ScopedDataDir unset(nullptr);
+    EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path); }),
+              path + ":4: imu.recording: $VIGIL_DATA/euroc/V1_01_easy " + reason);
+    EXPECT_EQ(InputErrorOf([&] {
+                LoadRunConfig("", {"imu.source=recording", "imu.recording=$VIGIL_DATA/x"});
+              }),
+              "--set imu.recording=$VIGIL_DATA/x: imu.recording: $VIGIL_DATA/x " + reason);
+    const std::string trajectory = dir.File(
+        "t.yaml", "duration_s: 0\ntrajectory:\n  type: recording\n  recording: $VIGIL_DATA/gt.txt\n");
+    EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(trajectory); }),
+              trajectory + ":4: trajectory.recording: $VIGIL_DATA/gt.txt " + reason);
+  }
+  const vigil::testing::ScopedDataDir set("/datasets");
+  EXPECT_EQ(LoadRunConfig(path).sim.imu.recording, "/datasets/euroc/V1_01_easy");
+}
+
 TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
   TempDir dir;
   const std::string path = dir.File("c.yaml", "seed: 1\ncamera:\n  rate_hz: 20\n");
