@@ -62,15 +62,18 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
   }
   if (!J.allFinite()) return false;
   Robustify(loss, r, J);
-  const Eigen::MatrixXd JtJ = J.transpose() * J;
-  const Eigen::VectorXd Jtr = J.transpose() * r;
-  for (std::size_t a = 0, ca = 0; a < blocks.size(); ca += columns[a].tangent, ++a) {
-    g_.segment(columns[a].column, columns[a].tangent) += Jtr.segment(ca, columns[a].tangent);
-    for (std::size_t b = 0, cb = 0; b < blocks.size(); cb += columns[b].tangent, ++b)
-      H_.block(columns[a].column, columns[b].column, columns[a].tangent, columns[b].tangent) +=
-          JtJ.block(ca, cb, columns[a].tangent, columns[b].tangent);
-  }
+  Accumulate(columns, J.transpose() * J, J.transpose() * r);
   return true;
+}
+
+void WindowInformation::Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
+                                   const Eigen::VectorXd& g) {
+  for (std::size_t a = 0, ca = 0; a < columns.size(); ca += columns[a].tangent, ++a) {
+    g_.segment(columns[a].column, columns[a].tangent) += g.segment(ca, columns[a].tangent);
+    for (std::size_t b = 0, cb = 0; b < columns.size(); cb += columns[b].tangent, ++b)
+      H_.block(columns[a].column, columns[b].column, columns[a].tangent, columns[b].tangent) +=
+          H.block(ca, cb, columns[a].tangent, columns[b].tangent);
+  }
 }
 
 double WindowInformation::EliminatedDepth::Coupling(const Eigen::VectorXd& dx) const {
@@ -146,12 +149,7 @@ bool WindowInformation::AddPrior(const LinearPrior& prior) {
   Eigen::MatrixXd H;
   Eigen::VectorXd g;
   PriorInformationAtCurrentValues(prior, &H, &g);
-  for (std::size_t a = 0, ca = 0; a < columns.size(); ca += columns[a].tangent, ++a) {
-    g_.segment(columns[a].column, columns[a].tangent) += g.segment(ca, columns[a].tangent);
-    for (std::size_t b = 0, cb = 0; b < columns.size(); cb += columns[b].tangent, ++b)
-      H_.block(columns[a].column, columns[b].column, columns[a].tangent, columns[b].tangent) +=
-          H.block(ca, cb, columns[a].tangent, columns[b].tangent);
-  }
+  Accumulate(columns, H, g);
   return true;
 }
 

@@ -77,6 +77,9 @@ class WindowInformation {
     int tangent = 0;
   };
   BlockColumn ColumnOf(const double* block) const;
+  // Adds H and g, laid out over `columns` in order (each block's tangent rows), to the window's.
+  void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
+                  const Eigen::VectorXd& g);
 
   std::vector<double*> pose_blocks_;
   std::vector<double*> speed_bias_blocks_;
