@@ -157,7 +157,13 @@ void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>&
       relation = "lies inside the input ";
     else
       continue;
-    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() +
+    // A link inside an input (a recording's image folder linked elsewhere) makes its target an input.
+    std::error_code abs_ec;
+    if (in != fs::absolute(input, abs_ec).lexically_normal())
+      relation += input.string() + " (" + in.string() + ")";
+    else
+      relation += input.string();
+    throw InputError(option + " " + output.string() + ": the output " + relation +
                      ", which it would overwrite; choose an output outside every input");
   }
 }
