@@ -133,8 +133,14 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   t = Clock::now();
   const int64_t t_first = imu.empty() ? 0 : imu.front().t_ns;
   const int64_t t_last = imu.empty() ? 0 : imu.back().t_ns;
-  ExternalTrajectory read = ReadExternalTrajectory(output_dir / options.trajectory, options.format,
-                                                   options.time_unit, t_first, t_last);
+  const fs::path trajectory = output_dir / options.trajectory;
+  const std::string outside = TrajectoryOutsideOutput(trajectory, output_dir);
+  if (!outside.empty()) {
+    fail(outside);
+    return out;
+  }
+  ExternalTrajectory read =
+      ReadExternalTrajectory(trajectory, options.format, options.time_unit, t_first, t_last);
   json["wall_time_s"]["read"] = ExternalSecondsSince(t);
   json["rows"] = read.trajectory.size();
   if (!read.failure.empty()) {
