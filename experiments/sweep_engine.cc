@@ -15,7 +15,9 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "core/thread_handoff.h"
+#include "experiments/child_process.h"
 #include "experiments/progress.h"
+#include "experiments/sweep_lock.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -150,10 +152,12 @@ namespace {
 
 // Whether `dir` holds anything besides sweep.yaml being staged: a shard that starts beside another sees the
 // other's sweep.yaml staging for an instant before it is linked into place (CommitSweepFile), and that
-// directory is still a new sweep, not a user's directory.
+// directory is still a new sweep, not a user's directory. The sweep's lock file (experiments/sweep_lock.h)
+// does not count either: it is taken before the directory is prepared.
 bool HasEntriesBesidesSweepFileStaging(const fs::path& dir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    if (entry.path().filename() == kSweepLockFile) continue;
     const auto staging = ParseStagingName(entry.path().filename().string());
     if (!staging || staging->final_name != "sweep.yaml") return true;
   }
@@ -184,7 +188,7 @@ void CheckSweepDirectory(const fs::path& dir, bool resume, bool force) {
 void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
   CheckSweepDirectory(dir, resume, force);
   std::error_code ec;
-  const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
+  const bool non_empty = fs::is_directory(dir, ec) && HasEntriesBesidesSweepFileStaging(dir);
   if (non_empty && force && !resume) {
     // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
     if (!fs::exists(dir / "sweep.yaml", ec))
