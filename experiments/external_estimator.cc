@@ -83,6 +83,9 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
     result.frames = 0;
   };
   json["wall_time_s"] = {{"write_recording", 0.0}, {"process", 0.0}, {"read", 0.0}};
+  // From here to the return, an interrupt is handed on to the program and then thrown (Interrupted), so
+  // that the temporary recording is removed on the way out.
+  const InterruptScope interrupts;
 
   // 1. The recording, the output folder and the command line.
   const fs::path external_dir = run_dir / "external";

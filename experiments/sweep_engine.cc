@@ -108,6 +108,8 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
       done->metrics = run(index, staging.path());
     } catch (const std::exception& e) {
       done->metrics = FailureMetrics(e.what());
+    } catch (const Interrupted&) {
+      throw;  // vigil was interrupted: not a failed run; the sweep stops
     } catch (...) {
       done->metrics = FailureMetrics("unknown exception");
     }
