@@ -251,8 +251,12 @@ void KillDescendants(pid_t program) {
       ::kill(-program, signal);
       ::kill(program, signal);
     }
-    for (pid_t reaped; (reaped = ::waitpid(-1, &status, WNOHANG)) > 0;)
-      if (reaped == program) ended = true;  // else an orphan the program left, adopted and reaped
+    int reaped_status = 0;
+    for (pid_t reaped; (reaped = ::waitpid(-1, &reaped_status, WNOHANG)) > 0;) {
+      if (reaped != program) continue;  // an orphan the program left, adopted and reaped
+      status = reaped_status;
+      ended = true;
+    }
   }
   KillDescendants(program);
   WriteAll(report_fd, &status, sizeof status);
