@@ -148,26 +148,76 @@ void CloseOtherDescriptors(int first, int keep_a, int keep_b) {
   ::_exit(127);  // not reached: fail() exits
 }
 
+// Appends the decimal digits of `value` to `path` at `*at`.
+void AppendNumber(char* path, std::size_t* at, long value) {
+  char digits[24];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + value % 10);
+    value /= 10;
+  } while (value > 0);
+  while (n > 0) path[(*at)++] = digits[--n];
+}
+
+// Reads at most `size` bytes of the file `path`; -1 when it cannot be opened.
+ssize_t ReadSmallFile(const char* path, char* text, std::size_t size) {
+  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  std::size_t got = 0;
+  while (got < size) {
+    const ssize_t k = ::read(fd, text + got, size - got);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) break;
+    got += static_cast<std::size_t>(k);
+  }
+  ::close(fd);
+  return static_cast<ssize_t>(got);
+}
+
+// Without /proc/self/task/<pid>/children (a kernel without CONFIG_PROC_CHILDREN): every /proc/<pid>/stat
+// whose parent (the field after the state) is `self`.
+int ScanChildren(pid_t self, pid_t* children, int max) {
+  const int dir = ::open("/proc", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) return 0;
+  int count = 0;
+  alignas(8) char entries[4096];
+  for (long n; count < max && (n = ::syscall(SYS_getdents64, dir, entries, sizeof entries)) > 0;) {
+    for (long at = 0; at < n && count < max;) {
+      const char* name = entries + at + 19;  // struct linux_dirent64: ino 8, off 8, reclen 2, type 1, name
+      unsigned short reclen = 0;
+      std::memcpy(&reclen, entries + at + 16, sizeof reclen);
+      at += reclen;
+      long pid = 0;
+      for (const char* c = name; *c != '\0'; ++c) pid = *c >= '0' && *c <= '9' ? pid * 10 + (*c - '0') : -1;
+      if (pid <= 0) continue;
+      char path[64] = "/proc/";
+      std::size_t end = 6;
+      AppendNumber(path, &end, pid);
+      std::memcpy(path + end, "/stat", 6);
+      char stat[512];
+      const ssize_t size = ReadSmallFile(path, stat, sizeof stat - 1);
+      if (size <= 0) continue;
+      stat[size] = '\0';
+      const char* paren = std::strrchr(stat, ')');  // the command name may hold anything, ')' included
+      if (paren == nullptr || paren[1] == '\0' || paren[2] == '\0') continue;
+      long parent = 0;
+      for (const char* c = paren + 4; *c >= '0' && *c <= '9'; ++c) parent = parent * 10 + (*c - '0');
+      if (parent == self) children[count++] = static_cast<pid_t>(pid);
+    }
+  }
+  ::close(dir);
+  return count;
+}
+
 // The supervisor's children, from /proc/self/task/<pid>/children (it is single-threaded): at most `max`.
 int ReadChildren(pid_t* children, int max) {
   char path[64] = "/proc/self/task/";
-  char digits[16];
-  int n = 0;
-  for (long pid = ::getpid(); pid > 0; pid /= 10) digits[n++] = static_cast<char>('0' + pid % 10);
   std::size_t at = std::strlen(path);
-  while (n > 0) path[at++] = digits[--n];
+  AppendNumber(path, &at, ::getpid());
   std::memcpy(path + at, "/children", 10);
-  const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return -1;
   char text[4096];
-  ssize_t size = 0;
-  while (size < static_cast<ssize_t>(sizeof text)) {
-    const ssize_t k = ::read(fd, text + size, sizeof text - static_cast<std::size_t>(size));
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) break;
-    size += k;
-  }
-  ::close(fd);
+  const ssize_t size = ReadSmallFile(path, text, sizeof text);
+  if (size < 0) return ScanChildren(::getpid(), children, max);
   int count = 0;
   long value = 0;
   bool in_number = false;

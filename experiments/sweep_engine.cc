@@ -183,8 +183,12 @@ void CheckSweepDirectory(const fs::path& dir, bool resume, bool force) {
     throw InputError(dir.string() +
                      ": output directory is not empty (use --resume to continue the sweep "
                      "in it, or --force to start over)");
-  if (force && !resume && fs::exists(dir / "runs", ec) && !is_sweep)
-    throw InputError(dir.string() + ": has runs/ but no sweep.yaml: not a sweep directory, not replaced");
+  // Refused here, before the sweep takes its lock (a file in `dir`): nothing is written into a user's folder.
+  if (force && !resume && !is_sweep)
+    throw InputError(
+        dir.string() +
+        ": no sweep.yaml: not a sweep directory vigil wrote, so --force does not replace it; move it "
+        "away or choose another output");
 }
 
 void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
@@ -192,11 +196,8 @@ void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
   std::error_code ec;
   const bool non_empty = fs::is_directory(dir, ec) && HasEntriesBesidesSweepFileStaging(dir);
   if (non_empty && force && !resume) {
-    // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
-    if (!fs::exists(dir / "sweep.yaml", ec))
-      throw InputError(dir.string() +
-                       ": no sweep.yaml: not a sweep directory vigil wrote, so --force does not "
-                       "replace it; move it away or choose another output");
+    // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level (a
+    // directory without sweep.yaml was refused above).
     fs::remove_all(dir / "runs", ec);
     fs::remove_all(dir / "figures", ec);
     for (const char* name : {"sweep.yaml", "results.csv", "timing.csv", "summary.md"})
