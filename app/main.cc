@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "app/set_args.h"
 #include "core/error.h"
+#include "experiments/child_process.h"
 
 namespace vigil::app {
 namespace {
@@ -93,7 +94,13 @@ int main(int argc, char** argv) {
     // Nested subcommands (`vigil plot run`): the action sits on the innermost parsed one.
     while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
     auto it = Actions().find(cmd);
-    if (it != Actions().end()) return RunReportingErrors(it->second);
+    if (it == Actions().end()) continue;
+    try {
+      return RunReportingErrors(it->second);
+    } catch (const vigil::experiments::Interrupted& interrupted) {
+      // An external program was running: it and everything it started are gone, the temporary files too.
+      vigil::experiments::EndWithSignal(interrupted.signal);
+    }
   }
   return 0;
 }

@@ -1,4 +1,5 @@
 #include "core/dataset.h"
+#include "core/ground_truth_gap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -209,6 +210,7 @@ std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
     s.b_a = Eigen::Vector3d(rate(14), rate(15), rate(16));
     if (!out.empty()) {
       const double dt_s = NsToS(s.t_ns - out.back().t_ns);
+      if (s.t_ns - out.back().t_ns > kMaxGroundTruthGap_ns) r.Fail(GroundTruthGapReason(dt_s));
       const double step_m = (s.p_W - out.back().p_W).norm();
       if (step_m > kMaxGroundTruthSpeed_mps * dt_s)
         r.Fail("position jumps " + FormatDouble(step_m) + " m in " + FormatDouble(dt_s) + " s (" +

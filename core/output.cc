@@ -157,7 +157,11 @@ void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>&
       relation = "lies inside the input ";
     else
       continue;
-    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() +
+    // An input reached through a link (a recording's image folder linked elsewhere) is named with its target.
+    fs::path plain = fs::absolute(input, ec).lexically_normal();
+    if (!plain.has_filename()) plain = plain.parent_path();
+    const std::string target = in == plain ? "" : " (" + in.string() + ")";
+    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() + target +
                      ", which it would overwrite; choose an output outside every input");
   }
 }

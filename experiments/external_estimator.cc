@@ -83,6 +83,9 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
     result.frames = 0;
   };
   json["wall_time_s"] = {{"write_recording", 0.0}, {"process", 0.0}, {"read", 0.0}};
+  // From here to the return, an interrupt is handed on to the program and then thrown (Interrupted), so
+  // that the temporary recording is removed on the way out.
+  const InterruptScope interrupts;
 
   // 1. The recording, the output folder and the command line.
   const fs::path external_dir = run_dir / "external";
@@ -133,8 +136,14 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   t = Clock::now();
   const int64_t t_first = imu.empty() ? 0 : imu.front().t_ns;
   const int64_t t_last = imu.empty() ? 0 : imu.back().t_ns;
-  ExternalTrajectory read = ReadExternalTrajectory(output_dir / options.trajectory, options.format,
-                                                   options.time_unit, t_first, t_last);
+  const fs::path trajectory = output_dir / options.trajectory;
+  const std::string outside = TrajectoryOutsideOutput(trajectory, output_dir);
+  if (!outside.empty()) {
+    fail(outside);
+    return out;
+  }
+  ExternalTrajectory read =
+      ReadExternalTrajectory(trajectory, options.format, options.time_unit, t_first, t_last);
   json["wall_time_s"]["read"] = ExternalSecondsSince(t);
   json["rows"] = read.trajectory.size();
   if (!read.failure.empty()) {

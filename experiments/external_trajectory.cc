@@ -88,6 +88,21 @@ bool ParseNanoseconds(std::string_view text, int64_t* t_ns) {
 
 }  // namespace
 
+std::string TrajectoryOutsideOutput(const fs::path& path, const fs::path& output_dir) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec))) return {};
+  const std::string name = path.filename().string();
+  const fs::path root = fs::canonical(output_dir, ec);
+  if (ec) return name + ": the {output} folder cannot be resolved: " + ec.message();
+  const fs::path real = fs::canonical(path, ec);
+  if (ec) return name + ": cannot be resolved (" + ec.message() + "); not read";
+  const fs::path inside = real.lexically_relative(root);
+  if (!inside.empty() && *inside.begin() != "..") return {};
+  return name + ": resolves to " + real.string() +
+         ", outside the estimator's {output} folder: not read (the trajectory must be a file the estimator "
+         "wrote there, not a link out of it)";
+}
+
 ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat format, TimeUnit unit,
                                           int64_t t_first_ns, int64_t t_last_ns) {
   ExternalTrajectory out;

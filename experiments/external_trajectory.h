@@ -33,4 +33,11 @@ struct ExternalTrajectory {
 ExternalTrajectory ReadExternalTrajectory(const std::filesystem::path& path, TrajectoryFormat format,
                                           TimeUnit unit, int64_t t_first_ns, int64_t t_last_ns);
 
+// Empty when `path`, with every symbolic link on it resolved, lies inside `output_dir` (or does not exist:
+// the reader says so); else why it is not read ("traj.txt: resolves to /etc/passwd, outside ..."). An
+// estimator's trajectory is what it wrote into its {output} folder, never a file elsewhere that a link
+// names.
+std::string TrajectoryOutsideOutput(const std::filesystem::path& path,
+                                    const std::filesystem::path& output_dir);
+
 }  // namespace vigil::experiments

@@ -1,6 +1,7 @@
 #include "experiments/run_command.h"
 
 #include "core/output.h"
+#include "core/recording_files.h"
 
 namespace vigil::experiments {
 
@@ -9,7 +10,7 @@ nlohmann::json RunToDirectory(const std::string& config_path, const std::vector<
   const RunConfig config = LoadRunConfig(config_path, overrides);
   std::vector<std::filesystem::path> inputs = RunConfigInputs(config);
   inputs.emplace_back(config_path);
-  inputs.push_back(options.dataset_dir);
+  for (const std::filesystem::path& input : RecordingInputPaths(options.dataset_dir)) inputs.push_back(input);
   RefuseOutputOverInputs(dir, inputs);
   StagedDirectory out(dir, force);
   const nlohmann::json metrics = ExecuteRun(config, options, out.path());

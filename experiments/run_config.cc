@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/recording_files.h"
 #include "detectors/detector.h"
 #include "experiments/external_command.h"
 #include "sim/imu_presets.h"
@@ -102,10 +103,12 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
+  // A recording stands for every entry of it (a linked image folder makes its target an input).
   for (const std::string& file :
        {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
         config.detector.dtw.templates_file, config.sim.imu.recording, config.detector.calibration_dataset})
-    if (!file.empty()) inputs.emplace_back(file);
+    if (!file.empty())
+      for (const std::filesystem::path& input : RecordingInputPaths(file)) inputs.push_back(input);
   return inputs;
 }
 

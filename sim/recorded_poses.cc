@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/euroc.h"
 #include "core/format.h"
+#include "core/ground_truth_gap.h"
 #include "core/output.h"
 #include "core/so3.h"
 
@@ -139,6 +140,8 @@ void CheckSequence(const std::vector<TimedPose>& poses, const std::vector<int>& 
                                "timestamp " + std::to_string(p.t_ns) + " ns does not increase (previous " +
                                    std::to_string(q.t_ns) + " ns)"));
     const double dt_s = NsToS(p.t_ns - q.t_ns);
+    if (p.t_ns - q.t_ns > kMaxGroundTruthGap_ns)
+      throw InputError(Located(file, lines[k], GroundTruthGapReason(dt_s)));
     const double speed = (p.p_W - q.p_W).norm() / dt_s;
     if (speed > kMaxRecordedSpeed_mps)
       throw InputError(Located(file, lines[k],

@@ -8,7 +8,8 @@
 // - a TUM / rpg text trajectory: whitespace-separated "timestamp [s] tx ty tz qx qy qz qw", '#' comments.
 // Rows must have finite values, strictly increasing timestamps and unit quaternions (to 1e-3; renormalized);
 // at least 2 rows; consecutive poses must not jump (more than kMaxRecordedSpeed_mps, or more than
-// kMaxRecordedRotationStep_rad between two rows). Errors: InputError "file:line: reason".
+// kMaxRecordedRotationStep_rad between two rows), and no gap between two rows may exceed 1 s
+// (kMaxGroundTruthGap_ns, core/ground_truth_gap.h). Errors: InputError "file:line: reason".
 #pragma once
 
 #include <cstdint>

@@ -8,6 +8,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/euroc.h"
+#include "core/ground_truth_gap.h"
 #include "core/output.h"
 #include "core/reference_imu.h"
 #include "tests/core/test_util.h"
@@ -50,6 +51,15 @@ TEST(GroundTruthChecks, RefusesOneRowRepeatedTimesAndTeleports) {
       RecordingChecksGtError(GtRow(0, 0.0) + GtRow(5000000, 0.0) + GtRow(10000000, 0.6));
   EXPECT_NE(teleport.find("gt.csv:4: "), std::string::npos) << teleport;
   EXPECT_NE(teleport.find("teleport"), std::string::npos) << teleport;
+}
+
+// A gap of more than a second between two rows (minutes in the issue: 300 s with no pose) is refused at
+// its row; a second exactly passes.
+TEST(GroundTruthChecks, RefusesAGapLongerThanASecond) {
+  EXPECT_EQ(RecordingChecksGtError(GtRow(0, 0.0) + GtRow(kMaxGroundTruthGap_ns, 0.0)), "");
+  EXPECT_EQ(RecordingChecksGtError(GtRow(0, 0.0) + GtRow(5000000, 0.0) + GtRow(300005000000, 0.0)),
+            "gt.csv:4: no pose for 300 s since the previous row (more than the limit of 1 s): the motion "
+            "across the gap is unknown; split the recording there");
 }
 
 ImuStream ImuSpanning(int64_t begin_ns, int64_t end_ns) {

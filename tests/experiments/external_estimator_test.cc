@@ -109,6 +109,22 @@ TEST(ExternalEstimator, EveryFailureIsAFailedRunWithItsReason) {
   }
 }
 
+// The trajectory is what the estimator wrote into {output}: a link out of it (to /etc/passwd, or here to a
+// good trajectory beside it) is not followed; a link to a file inside it is.
+TEST(ExternalEstimator, ATrajectoryLinkOutOfTheOutputFolderIsNotRead) {
+  TempDir tmp;
+  const nlohmann::json out = RunFake(tmp, "link_out");
+  EXPECT_EQ(out["status"], "failed");
+  EXPECT_EQ(Reason(out).rfind("external estimator: stamped_traj_estimate.txt: resolves to ", 0), 0u)
+      << Reason(out);
+  EXPECT_NE(Reason(out).find("/external/outside.txt, outside the estimator's {output} folder: not read"),
+            std::string::npos)
+      << Reason(out);
+  TempDir other;
+  const nlohmann::json in = RunFake(other, "link_in");
+  EXPECT_EQ(in["status"], "ok") << Reason(in);
+}
+
 TEST(ExternalEstimator, TimeoutKillsItAndFailsTheRun) {
   TempDir tmp;
   const auto start = std::chrono::steady_clock::now();

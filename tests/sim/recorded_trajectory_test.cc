@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/format.h"
 #include "core/so3.h"
 #include "core/types.h"
 #include "sim/cumulative_bspline.h"
@@ -225,6 +226,40 @@ TEST(RecordedTrajectory, IsBuiltFromTheTrajectoryOptions) {
   EXPECT_EQ(
       InputErrorOf([&] { MakeTrajectoryModel(o); }).rfind("trajectory.recording: /nonexistent/gt.csv", 0),
       0u);
+}
+
+// The sizes a config value drives are checked before anything is allocated: a knot spacing of 1 ns over a
+// second would be a billion control points (it grew to GBs before bad_alloc), and a duration beyond the
+// recording is refused before the spline is fitted.
+TEST(RecordedTrajectory, KnotCountAndDurationAreCheckedBeforeTheFit) {
+  TempDir tmp;
+  TrajectoryOptions o;
+  o.type = TrajectoryType::kRecording;
+  o.recording = tmp.File("traj.txt", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
+  o.spline.knot_spacing_s = 1e-9;
+  EXPECT_EQ(InputErrorOf([&] { MakeTrajectoryModel(o, 5.0); }),
+            "duration_s: 5 s exceeds the end of the trajectory (1 s)");
+  EXPECT_EQ(
+      InputErrorOf([&] { MakeTrajectoryModel(o, 1.0); }),
+      "trajectory.spline.knot_spacing_s: 1e-09 s over the recording's 1 s needs 1000000003 spline control "
+      "points, more than the limit of 100000; set a larger spacing, at least " +
+          FormatDouble(1.0 / 99997) + " s");
+  o.spline.knot_spacing_s = 1e-3;
+  EXPECT_EQ(MakeTrajectoryModel(o, 1.0)->EndTime(), 1.0);
+  EXPECT_EQ(SplineControlPoints(1.0, 1e-3), 1003.0);
+}
+
+// A recorded ground truth with a gap: a spline through it would invent the motion, so the gap is refused at
+// its row (the same bound as the dataset readers').
+TEST(RecordedPoses, RefusesAGapLongerThanASecond) {
+  TempDir tmp;
+  const std::string tum = tmp.File("traj.txt", "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n301 1 0 0 0 0 0 1\n");
+  EXPECT_EQ(
+      InputErrorOf([&] { ReadRecordedPoses(tum); }),
+      tum +
+          ":3: no pose for 300 s since the previous row (more than the limit of 1 s): the motion across "
+          "the gap is unknown; split the recording there");
+  EXPECT_EQ(ReadRecordedPoses(tmp.File("ok.txt", "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n")).size(), 2u);
 }
 
 // duration_s: 0 is "to the end of the recording", resolved from the recording's timestamps; motions without
