@@ -143,6 +143,7 @@ void WriteOutputManifest(const fs::path& dir) {
 
 void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>& inputs,
                             const std::string& option) {
+  if (output.empty()) throw InputError(option + ": the output path is empty (name a directory to write)");
   const fs::path out = Resolved(output);
   std::error_code ec;
   for (const fs::path& input : inputs) {
@@ -167,6 +168,7 @@ void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>&
 }
 
 StagedDirectory::StagedDirectory(fs::path final_dir, bool force) : final_(std::move(final_dir)) {
+  if (final_.empty()) throw InputError("-o: the output path is empty (name a directory to write)");
   if (final_.has_filename() == false) final_ = final_.parent_path();  // "out/" -> "out"
   RefuseExisting(final_, force);
   if (IsNonEmptyDirectory(final_)) {

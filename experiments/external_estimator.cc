@@ -6,10 +6,13 @@
 #include <chrono>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
+#include "core/staging.h"
 #include "experiments/child_process.h"
 #include "experiments/external_command.h"
 #include "experiments/external_recording.h"
@@ -67,6 +70,20 @@ const char* OutcomeName(ChildProcessResult::Outcome outcome) {
   return "?";
 }
 
+// The command line as it reads once the run is committed: the run directory's staging name
+// ("<id>.tmp-<host>-<pid>", core/staging.h) replaced by its final one, where the files then are.
+std::vector<std::string> CommittedCommand(std::vector<std::string> argv, const fs::path& run_dir) {
+  const fs::path staged = fs::absolute(run_dir).lexically_normal();
+  const std::optional<StagingName> staging = ParseStagingName(staged.filename().string());
+  if (!staging) return argv;
+  const std::string from = staged.string();
+  const std::string to = (staged.parent_path() / staging->final_name).string();
+  for (std::string& arg : argv)
+    for (std::size_t at = arg.find(from); at != std::string::npos; at = arg.find(from, at + to.size()))
+      arg.replace(at, from.size(), to);
+  return argv;
+}
+
 }  // namespace
 
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
@@ -109,7 +126,11 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
                                    CurrentExecutablePath()};
   ChildProcessOptions child;
   for (const std::string& arg : options.command) child.argv.push_back(ExpandPlaceholders(arg, values));
-  json["command"] = child.argv;
+  json["command"] = CommittedCommand(child.argv, run_dir);
+  json["recording"] = options.keep_recording
+                          ? "external/recording"
+                          : "removed after the run (estimator.external.keep_recording: true keeps it in "
+                            "external/recording)";
   std::string why;
   child.program = ResolveExecutable(child.argv.front(), &why);
   if (child.program.empty()) {

@@ -27,7 +27,8 @@ struct ExternalTrajectory {
   std::string failure;  // empty when the file was read; else why the run failed ("trajectory.txt:12: ...")
 };
 
-// Reads `path`: rows must be finite, quaternions non-zero (normalized unless unit to double precision),
+// Reads `path`: rows must be finite, quaternions unit (core/pose_checks.h; normalized unless unit to double
+// precision),
 // times strictly increasing and inside [t_first_ns - slack, t_last_ns + slack] (a row outside is mostly a
 // unit mix-up: nanoseconds read as seconds). An absent or empty file is a failure too.
 ExternalTrajectory ReadExternalTrajectory(const std::filesystem::path& path, TrajectoryFormat format,

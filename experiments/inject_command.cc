@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 sim::RecordingFaultOptions ResolveInjectOptions(const InjectRequest& request) {
   sim::RecordingFaultOptions options;
   config::ApplyOverrides(request.overrides, options);
-  if (!request.seed.empty()) config::ApplyOverride("seed=" + request.seed, options);
+  if (!request.seed.empty()) options.seed = config::ParseSeedArgument(request.seed);
   const std::string why = sim::ValidateRecordingFaultOptions(options);
   if (!why.empty()) throw InputError("--set " + why);
   return options;

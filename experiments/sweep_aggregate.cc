@@ -7,6 +7,7 @@
 
 #include "core/output.h"
 #include "evaluation/metrics_access.h"
+#include "experiments/run_metrics.h"
 #include "experiments/run_metrics_file.h"
 #include "experiments/sweep_engine.h"
 
@@ -46,6 +47,7 @@ void CellResult::Merge(const CellResult& o) {
   runs += o.runs;
   failed += o.failed;
   diverged += o.diverged;
+  inconclusive += o.inconclusive;
   missing += o.missing;
   scored_samples += o.scored_samples;
   scored_flagged += o.scored_flagged;
@@ -80,6 +82,7 @@ void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances
   ++cell->runs;
   if (IsFailed(m)) {
     ++cell->failed;
+    if (evaluation::MetricText(m, "status") == kInconclusive) ++cell->inconclusive;
     std::string reason = evaluation::MetricText(m, "failure_reason");
     ++cell->failure_reasons[reason.empty() ? "(no reason given)" : reason];
     return;

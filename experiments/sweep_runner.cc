@@ -76,6 +76,9 @@ SweepPlan ResolveSweepPlan(const SweepSpec& spec) {
     // A sweep's runs are simulated: feature tracks, no camera images on disk.
     if (const std::string why = ExternalInputProblem(plan.configs.back(), false, true); !why.empty())
       ThrowCellError(spec, cell, why);
+    // A recording (or any input file) that is absent would fail every run of the cell: refused before any.
+    if (const std::string why = MissingInputProblem(plan.configs.back()); !why.empty())
+      ThrowCellError(spec, cell, why);
   }
   plan.runs = EnumerateRuns(spec, plan.cells);
   return plan;

@@ -62,6 +62,22 @@ TEST(GroundTruthChecks, RefusesAGapLongerThanASecond) {
             "across the gap is unknown; split the recording there");
 }
 
+// A flipped row (a half turn between two rows) is refused by every ground-truth reader, as by the recorded
+// trajectory's (core/pose_checks.h), and so is a quaternion far from unit; 80 degrees pass.
+TEST(GroundTruthChecks, RefusesAFlippedRowAndANonUnitQuaternion) {
+  const auto row = [](int64_t t_ns, const char* q) {
+    return std::to_string(t_ns) + ",0,0,0," + q + ",0,0,0,0,0,0,0,0,0\n";
+  };
+  const std::string flipped =
+      RecordingChecksGtError(row(0, "1,0,0,0") + row(5000000, "1,0,0,0") + row(10000000, "0,0,0,1"));
+  EXPECT_NE(flipped.find("gt.csv:4: orientation jumps 180 deg"), std::string::npos) << flipped;
+  EXPECT_EQ(
+      RecordingChecksGtError(row(0, "1,0,0,0") + row(5000000, "0.766044443118978,0,0,0.6427876096865393")),
+      "");
+  const std::string scaled = RecordingChecksGtError(row(0, "1,0,0,0") + row(5000000, "3,0,0,0"));
+  EXPECT_NE(scaled.find("gt.csv:3: quaternion is not unit (norm 3)"), std::string::npos) << scaled;
+}
+
 ImuStream ImuSpanning(int64_t begin_ns, int64_t end_ns) {
   ImuStream imu;
   for (int64_t t = begin_ns; t <= end_ns; t += 5000000) imu.push_back(ImuSample{t});

@@ -2,6 +2,8 @@
 // reads the recording vigil wrote (its ground truth and camera frame times) and misbehaves as MODE says:
 //   good       the ground truth at every camera frame, TUM, seconds
 //   partial    the same for the first half of the frames only
+//   two        the same for the first two frames only
+//   scaled_q   the ground truth with every quaternion 3 times unit length
 //   euroc_ns   the ground truth at every frame, EuRoC csv, nanoseconds
 //   exit3      exits with status 3
 //   signal     kills itself with SIGKILL
@@ -138,6 +140,12 @@ int main(int argc, char** argv) {
     fs::create_symlink(fs::absolute(real), trajectory);
   } else if (mode == "partial") {
     poses.resize(poses.size() / 2);
+    WriteTum(trajectory, poses, false);
+  } else if (mode == "two") {
+    poses.resize(2);
+    WriteTum(trajectory, poses, false);
+  } else if (mode == "scaled_q") {
+    for (StampedPose& p : poses) p.q_WB.coeffs() *= 3.0;
     WriteTum(trajectory, poses, false);
   } else if (mode == "unsorted") {
     std::vector<StampedPose> reversed(poses.rbegin(), poses.rend());

@@ -279,10 +279,17 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
   o.trajectory.type = TrajectoryType::kEllipse;
   ResolveDurationToEnd(&o);
   EXPECT_EQ(o.duration_s, 0.0);
-  EXPECT_EQ(InputErrorOf([&] {
-              ValidateSimOptions(o, "c.yaml");
-            }).rfind("c.yaml: duration_s: must be at least 0.5 s", 0),
-            0u);
+  EXPECT_EQ(InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
+            "c.yaml: duration_s: must be at least 0.5 s, got 0 s (0, to the end of the trajectory, needs "
+            "trajectory.type waypoints or recording)");
+  // A recording shorter than a run: 0 ran to its end, and the message says so instead of asking for the
+  // trajectory type the config already has.
+  o.trajectory.type = TrajectoryType::kRecording;
+  o.duration_s = 0.2;
+  EXPECT_EQ(
+      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
+      "c.yaml: duration_s: must be at least 0.5 s, got 0.2 s (0 runs to the end of trajectory.recording, "
+      "which is shorter than that)");
 }
 
 // The whole V1_01 ground truth (2,895 poses at 20 Hz, 145 s; roll near +-pi throughout). Measured: position
