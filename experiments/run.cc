@@ -180,7 +180,10 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
   if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
-  if (external) metrics["external"] = external->json;
+  if (external) {
+    metrics["external"] = external->json;
+    DescribeExternalEstimator(&metrics);
+  }
   if (data.frontend) {
     metrics["frontend"] = data.frontend->metrics;
     metrics["wall_time_s"]["track"] = data.frontend->track_s;  // rendering (simulated runs) and tracking

@@ -2,6 +2,7 @@
 
 #include "core/data_dir.h"
 #include "core/error.h"
+#include "core/format.h"
 
 namespace vigil::sim {
 
@@ -23,10 +24,18 @@ void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
                                   std::pair{"imu.recording", &options.imu.recording}})
     if (const std::string why = UnsetDataDirReason(*file); !why.empty())
       throw InputError(origin + ": " + key + ": " + why);
-  if (!(options.duration_s >= kMinDuration_s))
-    throw InputError(origin +
-                     ": duration_s: must be at least 0.5 s (0, to the end of the trajectory, needs " +
-                     "trajectory.type waypoints or recording)");
+  if (!(options.duration_s >= kMinDuration_s)) {
+    // 0 was resolved to the trajectory's own length when it has one (ResolveDurationToEnd).
+    const TrajectoryOptions& t = options.trajectory;
+    const char* file = t.type == TrajectoryType::kWaypoints && !t.waypoints_file.empty() ? "waypoints_file"
+                       : t.type == TrajectoryType::kRecording && !t.recording.empty()    ? "recording"
+                                                                                         : nullptr;
+    throw InputError(
+        origin + ": duration_s: must be at least 0.5 s, got " + FormatDouble(options.duration_s) + " s" +
+        (file ? std::string(" (0 runs to the end of trajectory.") + file + ", which is shorter than that)"
+              : std::string(" (0, to the end of the trajectory, needs trajectory.type waypoints "
+                            "or recording)")));
+  }
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);
   if (options.glitch.enabled && options.glitch.axes.empty())

@@ -19,14 +19,13 @@
 #include "core/euroc.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/pose_checks.h"
 
 namespace vigil::bag {
 namespace {
 
 namespace fs = std::filesystem;
 constexpr std::uintmax_t kMaxSensorYamlBytes = 1 << 20;
-// How far a ground-truth quaternion's norm may be from 1 (as the ground-truth reader accepts).
-constexpr double kQuaternionNormTolerance = 1e-3;
 
 // "BAG: TOPIC: message N: " (N from 1).
 std::string Where(const std::string& bag, const std::string& topic, std::size_t index) {
@@ -131,9 +130,9 @@ class MessageSink {
     CheckFinite(pose.p_W, "position");
     CheckFinite(pose.q_WB.coeffs(), "orientation");
     if (pose.v_B) CheckFinite(*pose.v_B, "linear velocity");
-    if (!(std::abs(pose.q_WB.norm() - 1.0) <= kQuaternionNormTolerance))
-      throw MessageError("orientation: quaternion of norm " + FormatDouble(pose.q_WB.norm()) +
-                         " (a unit quaternion within 1e-3 is needed)");
+    // The rule of every pose reader (core/pose_checks.h).
+    if (const std::string problem = QuaternionNormProblem(pose.q_WB); !problem.empty())
+      throw MessageError("orientation: " + problem);
     poses.push_back(pose);
   }
 

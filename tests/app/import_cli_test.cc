@@ -243,6 +243,11 @@ TEST_F(ImportCli, BadInputIsOneLineAndWritesNothing) {
                 point +
                     ": /vicon/firefly_sbx/firefly_sbx: geometry_msgs/PointStamped messages, a ground truth "
                     "needs a pose with its orientation");
+  // A ground truth whose quaternions are 3x unit length (the rule of every pose reader, core/pose_checks.h).
+  const std::string scaled = ShortBag("scaled", "--quaternion-scale 3");
+  ExpectRefused(
+      scaled, SensorFiles(),
+      scaled + ": /vicon/firefly_sbx/firefly_sbx: message 1: orientation: quaternion is not unit (norm 3)");
   // An unsupported encoding, stamps that go back, an image of another size than the camera's.
   const std::string yuv = ShortBag("yuv", "--encoding yuv422");
   ExpectRefused(yuv, SensorFiles(),

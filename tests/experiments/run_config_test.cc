@@ -114,5 +114,55 @@ TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
             "--set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
 }
 
+// Every key that feeds the IMU is bounded when the config is read, naming the key: 1e308 would write IMU
+// values that no reader accepts, or overflow to inf.
+TEST(RunConfig, KeysThatFeedTheImuAreBounded) {
+  for (const char* key :
+       {"imu.noise.switch_on_accel_bias_std", "imu.noise.switch_on_gyro_bias_std",
+        "imu.noise.gyro_noise_density", "imu.noise.accel_noise_density", "imu.noise.gyro_bias_random_walk",
+        "imu.noise.accel_bias_random_walk", "imu.vibration.frequency_hz", "imu.vibration.bandwidth_hz",
+        "imu.vibration.accel_rms_mps2", "imu.vibration.gyro_rms_radps", "imu.rate_hz", "gravity_mps2",
+        "faults.saturation.accel_range_mps2", "faults.saturation.accel_range_g",
+        "faults.saturation.gyro_range_dps", "faults.quantization.accel_lsb_mps2",
+        "faults.quantization.gyro_lsb_dps", "faults.timing.jitter_std_s"}) {
+    const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=1e308"}); });
+    EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be ", 0), 0u) << error;
+  }
+  for (const char* key : {"imu.noise.initial_accel_bias", "imu.noise.initial_gyro_bias",
+                          "faults.scale.accel_scale", "faults.scale.gyro_scale",
+                          "faults.scale.accel_misalignment_deg", "faults.scale.gyro_misalignment_deg"}) {
+    const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=[0, 0, 1e308]"}); });
+    EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be ", 0), 0u) << error;
+  }
+  // Values of real sensors, and far beyond, still pass.
+  EXPECT_EQ(InputErrorOf([] {
+              LoadRunConfig("", {"imu.noise.switch_on_accel_bias_std=0.5", "imu.vibration.frequency_hz=150",
+                                 "imu.vibration.accel_rms_mps2=20", "imu.rate_hz=4000"});
+            }),
+            "");
+}
+
+// A problem found after loading is located like a cross-key check: at the --set that set its key, or the
+// file's line, never with an empty location.
+TEST(RunConfig, LaterProblemsNameTheSetOrTheLine) {
+  EXPECT_EQ(std::string(LocatedConfigError("", {"estimator.external.input=images"},
+                                           "estimator.external.input: images: no images")
+                            .what()),
+            "--set estimator.external.input=images: estimator.external.input: images: no images");
+  EXPECT_EQ(std::string(LocatedConfigError("", {}, "estimator.external.input: images: no images").what()),
+            "--set: estimator.external.input: images: no images");
+  TempDir dir;
+  const std::string path = dir.File("c.yaml", "seed: 1\nimu:\n  source: recording\n  recording: gone\n");
+  EXPECT_EQ(
+      std::string(LocatedConfigError(path, {}, "imu.recording: gone: no such file or directory").what()),
+      path + ":4: imu.recording: gone: no such file or directory");
+  RunConfig config;
+  config.sim.imu.recording = (dir.path() / "gone").string();
+  EXPECT_EQ(MissingInputProblem(config),
+            "imu.recording: " + config.sim.imu.recording + ": no such file or directory");
+  config.sim.imu.recording = dir.path().string();
+  EXPECT_EQ(MissingInputProblem(config), "");
+}
+
 }  // namespace
 }  // namespace vigil::experiments

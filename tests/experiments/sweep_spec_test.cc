@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 #include "tests/experiments/sweep_test_util.h"
 
@@ -177,6 +178,25 @@ TEST(SweepSpec, ShippedSemiRealSweepsNameNoPathOutsideTheRepository) {
   }
   const vigil::testing::ScopedDataDir set("/datasets");
   EXPECT_EQ(ResolveCellConfig(whole, first).sim.imu.recording, "/datasets/euroc/V1_01_easy");
+}
+
+// A sweep whose recording is absent would run every cell as failed: it is refused before any run, at the
+// line that names the file (the base's, or the sweep's set).
+TEST(SweepSpec, AnAbsentInputFileIsRefusedBeforeAnyRun) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\ntrajectory:\n  type: recording\n  recording: absent_gt.csv\n");
+  const std::string p = dir.File("s.yaml", "base: base.yaml\nmethods: {original: none}\nseeds: [1]\n");
+  const std::string absent = (dir.path() / "absent_gt.csv").string();
+  EXPECT_EQ(InputErrorOf([&] { ResolveSweepPlan(LoadSweepSpec(p)); }),
+            (dir.path() / "base.yaml").string() + ":4: trajectory.recording: " + absent +
+                ": no such file or directory (cell all-original)");
+  dir.File("plain.yaml", "duration_s: 3\n");
+  const std::string q =
+      dir.File("t.yaml",
+               "base: plain.yaml\nset:\n  imu.source: recording\n  imu.recording: no_such_dir\n"
+               "methods: {original: none}\nseeds: [1]\n");
+  EXPECT_NE(InputErrorOf([&] { ResolveSweepPlan(LoadSweepSpec(q)); }).find("t.yaml:4: imu.recording: "),
+            std::string::npos);
 }
 
 TEST(SweepSpec, ShippedSweepsLoadAndResolve) {

@@ -8,7 +8,7 @@ another type, stamps that go back, a topic of another definition.
 
   write_bag.py MAV0 BAG [--encoding E] [--groundtruth TYPE] [--swap-imu K] [--compression C]
                         [--imu-topic T] [--image-topic T] [--groundtruth-topic T] [--imu-other-definition]
-                        [--seconds S]
+                        [--quaternion-scale K] [--seconds S]
 """
 import argparse
 import csv
@@ -111,6 +111,8 @@ def main():
     p.add_argument("--groundtruth-topic", default="/vicon/firefly_sbx/firefly_sbx")
     p.add_argument("--imu-other-definition", action="store_true",
                    help="sensor_msgs/Imu with another definition (another MD5)")
+    p.add_argument("--quaternion-scale", type=float, default=1.0,
+                   help="the ground truth's quaternions times this (not unit when not 1)")
     p.add_argument("--seconds", type=float, default=0.0,
                    help="only the messages of the first S seconds (0: all); short bags write fast")
     a = p.parse_args()
@@ -168,7 +170,8 @@ def main():
                 pose.position.x, pose.position.y, pose.position.z = p_w
                 q = pose.orientation
             if q is not None:
-                q.w, q.x, q.y, q.z = qw, qx, qy, qz
+                k_q = a.quaternion_scale
+                q.w, q.x, q.y, q.z = k_q * qw, k_q * qx, k_q * qy, k_q * qz
             if a.groundtruth == "odometry":  # the twist is in the child (body) frame: R_WB^T v_W
                 v = list(v_w)
                 r_wb = rotation(qw, qx, qy, qz)
