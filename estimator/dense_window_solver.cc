@@ -5,9 +5,8 @@
 #include <cmath>
 #include <memory>
 
-#include <Eigen/Cholesky>
-
 #include "estimator/pose_manifold.h"
+#include "estimator/window_factorization.h"
 
 namespace vigil::estimator {
 namespace {
@@ -213,6 +212,7 @@ DenseSolveSummary SolveDenseWindow(const DenseWindowProblem& p, const DenseSolve
   Linearization lin;
   Eigen::MatrixXd A;
   Eigen::VectorXd b;
+  WindowFactorization factorization;
   std::vector<double> depth_steps;
   bool relinearize = true;
   double radius = kInitialRadius, decrease_factor = 2.0;
@@ -231,11 +231,10 @@ DenseSolveSummary SolveDenseWindow(const DenseWindowProblem& p, const DenseSolve
       relinearize = false;
     }
     DampedSystem(lin, radius, &A, &b);
-    const Eigen::LLT<Eigen::MatrixXd> llt(A);
     bool accepted = false;
     double new_cost = cost;
-    if (llt.info() == Eigen::Success) {
-      const Eigen::VectorXd dx = llt.solve(b);
+    if (factorization.Compute(A)) {
+      const Eigen::VectorXd dx = factorization.Solve(b);
       const double model_decrease = DepthStepsAndModelDecrease(lin, dx, radius, &depth_steps);
       snapshot.Save();
       if (dx.allFinite() && model_decrease > 0.0 && ApplyStep(p, dx, depth_steps, pose_manifold) &&

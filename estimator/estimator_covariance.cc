@@ -1,13 +1,14 @@
 // The newest pose's covariance: the window's information at the current estimate (the same factors the
 // solve used, robust loss applied as Ceres does, with the anchored prior in place of the solve's), the
 // feature depths eliminated track by track (window_information.h), the gauge held at the run's first frame
-// (pose_covariance.h).
+// (pose_covariance.h), its marginal from the factorization of window_factorization.h.
 #include <memory>
 #include <utility>
 #include <vector>
 
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
+#include "estimator/window_factorization.h"
 #include "estimator/window_information.h"
 
 namespace vigil::estimator {
@@ -50,11 +51,10 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
                         &information.mutable_H());
   }
   if (!information.H().allFinite() || !information.g().allFinite()) return std::nullopt;
-  Matrix6d covariance;
-  const std::vector<int> block_sizes = information.BlockSizes();
-  if (!MarginalPoseCovariance(std::move(information.mutable_H()), block_sizes,
-                              WindowInformation::PoseColumn(information.frames() - 1), &covariance))
-    return std::nullopt;
+  WindowFactorization factorization;
+  if (!factorization.Compute(information.H())) return std::nullopt;
+  const Matrix6d covariance = factorization.NewestPoseCovariance();
+  if (!covariance.allFinite()) return std::nullopt;
   return covariance;
 }
 

@@ -33,13 +33,4 @@ LinearPrior GaugePrior(double* pose);
 // Adds the information of GaugePrior at the pose whose tangent block starts at `column` of `H`.
 void AddGaugeInformation(const Eigen::Quaterniond& q_WB, int column, Eigen::MatrixXd* H);
 
-// The 6x6 block at `column` of the inverse of the information matrix `H` (tangent space, symmetric, made of
-// blocks of `block_sizes` in order, one of which starts at `column`): the marginal covariance of that pose.
-// The other blocks are eliminated by Schur complements, the one with the fewest coupled dimensions first (a
-// window's speed-bias blocks are coupled to their neighbours only), and once those left are all coupled, by
-// a dense Cholesky factorization with the pose last. False when no pose block starts at `column`, `H` is
-// not positive definite or the block not finite.
-bool MarginalPoseCovariance(Eigen::MatrixXd H, const std::vector<int>& block_sizes, int column,
-                            Matrix6d* covariance);
-
 }  // namespace vigil::estimator

@@ -20,12 +20,6 @@ WindowInformation::WindowInformation(std::vector<double*> pose_blocks, std::vect
   g_.setZero(n);
 }
 
-std::vector<int> WindowInformation::BlockSizes() const {
-  std::vector<int> sizes;
-  for (int k = 0; k < frames(); ++k) sizes.insert(sizes.end(), {kPoseTangentSize, kSpeedBiasSize});
-  return sizes;
-}
-
 WindowInformation::BlockColumn WindowInformation::ColumnOf(const double* block) const {
   for (int k = 0; k < frames(); ++k) {
     if (pose_blocks_[k] == block) return {PoseColumn(k), kPoseTangentSize};

@@ -6,7 +6,7 @@
 // It holds what EliminateDropped (marginalization.h) gives for the same factors with the depths dropped, at
 // a fraction of the cost: the structure is known, so a track's reprojections are linearized in fixed sizes
 // and its depth eliminated over the poses that observe it, with no index maps and no allocation per term.
-// The pose covariance (pose_covariance.h) is its marginal.
+// The pose covariance (pose_covariance.h) is its marginal (window_factorization.h).
 #pragma once
 
 #include <array>
@@ -63,8 +63,6 @@ class WindowInformation {
   bool AddPrior(const LinearPrior& prior);
 
   int frames() const { return static_cast<int>(pose_blocks_.size()); }
-  // The block sizes in column order: 6, 9, 6, 9, ...
-  std::vector<int> BlockSizes() const;
   // Symmetric, both triangles filled.
   const Eigen::MatrixXd& H() const { return H_; }
   Eigen::MatrixXd& mutable_H() { return H_; }

@@ -10,6 +10,7 @@
 
 #include "estimator/pose_manifold.h"
 #include "estimator/run_estimator.h"
+#include "estimator/window_factorization.h"
 #include "evaluation/nees.h"
 #include "tests/estimator/sim_run.h"
 
@@ -21,8 +22,8 @@ namespace {
 TEST(PoseCovariance, HoldingTheGaugeIsConditioningOnPositionAndYaw) {
   std::mt19937_64 rng(7);
   std::normal_distribution<double> n01;
-  const int n = 6 + 9 + 6;  // oldest pose, a speed-bias block, newest pose
-  Eigen::MatrixXd J(40, n);
+  const int n = 2 * 15;  // two frames: oldest pose and speed-bias, newest pose and speed-bias
+  Eigen::MatrixXd J(60, n);
   for (int i = 0; i < J.rows(); ++i)
     for (int j = 0; j < n; ++j) J(i, j) = n01(rng);
   const Eigen::MatrixXd H = J.transpose() * J;
@@ -31,8 +32,9 @@ TEST(PoseCovariance, HoldingTheGaugeIsConditioningOnPositionAndYaw) {
 
   Eigen::MatrixXd held = H;
   AddGaugeInformation(q_oldest, 0, &held);
-  Matrix6d fixed;
-  ASSERT_TRUE(MarginalPoseCovariance(held, {6, 9, 6}, newest, &fixed));
+  WindowFactorization factorization;
+  ASSERT_TRUE(factorization.Compute(held));
+  const Matrix6d fixed = factorization.NewestPoseCovariance();
 
   const Eigen::MatrixXd Sigma = H.inverse();
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, n);
@@ -46,49 +48,13 @@ TEST(PoseCovariance, HoldingTheGaugeIsConditioningOnPositionAndYaw) {
   EXPECT_LT(fixed.trace(), Sigma.block(newest, newest, 6, 6).trace());
 }
 
-// A window's information: poses coupled to each other (shared features), each speed-bias block to its own
-// and its neighbours' states (IMU factors). Eliminating the sparse blocks first gives the dense inverse.
-TEST(PoseCovariance, TheBlockEliminationIsTheInverse) {
-  std::mt19937_64 rng(11);
-  std::normal_distribution<double> n01;
-  const int frames = 12;
-  std::vector<int> sizes;
-  for (int k = 0; k < frames; ++k) sizes.insert(sizes.end(), {6, 9});
-  const int n = frames * 15;
-  auto random_information = [&](int rows, int cols) {
-    Eigen::MatrixXd J(rows, cols);
-    for (int i = 0; i < rows; ++i)
-      for (int j = 0; j < cols; ++j) J(i, j) = n01(rng);
-    return Eigen::MatrixXd(J.transpose() * J);
-  };
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, n);
-  for (int k = 0; k < frames; ++k) H.block(15 * k, 15 * k, 15, 15) += random_information(20, 15);
-  for (int k = 1; k < frames; ++k) H.block(15 * (k - 1), 15 * (k - 1), 30, 30) += random_information(15, 30);
-  const Eigen::MatrixXd poses = random_information(40, 6 * frames);  // every pose with every pose
-  for (int i = 0; i < frames; ++i)
-    for (int j = 0; j < frames; ++j) H.block(15 * i, 15 * j, 6, 6) += poses.block(6 * i, 6 * j, 6, 6);
-  const Eigen::MatrixXd Sigma = H.inverse();
-  for (const int newest : {15 * (frames - 1), 15 * 4, 0}) {
-    Matrix6d P;
-    ASSERT_TRUE(MarginalPoseCovariance(H, sizes, newest, &P));
-    const Matrix6d expected = Sigma.block(newest, newest, 6, 6);
-    EXPECT_LT((P - expected).norm(), 1e-9 * expected.norm()) << newest;
-  }
-  Matrix6d P;
-  EXPECT_FALSE(MarginalPoseCovariance(H, sizes, 6, &P)) << "no pose block starts there";
-  H.block(15 * 3 + 6, 15 * 3 + 6, 9, 9).setZero();  // a speed-bias block without information of its own
-  H.block(15 * 3 + 6, 0, 9, n).setZero();
-  H.block(0, 15 * 3 + 6, n, 9).setZero();
-  EXPECT_FALSE(MarginalPoseCovariance(H, sizes, 0, &P)) << "not positive definite";
-}
-
 TEST(PoseCovariance, AGaugeOnlyMatrixHasNoCovariance) {
-  // Information on roll and pitch of one pose only: position and yaw held, the rest (the newest) is free.
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(12, 12);
+  // Information on roll and pitch of one pose only: position and yaw held, the rest is free.
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(30, 30);
   H.block(3, 3, 2, 2).setIdentity();
   AddGaugeInformation(Eigen::Quaterniond::Identity(), 0, &H);
-  Matrix6d P;
-  EXPECT_FALSE(MarginalPoseCovariance(H, {6, 6}, 6, &P));
+  WindowFactorization factorization;
+  EXPECT_FALSE(factorization.Compute(H));
 }
 
 // The gauge prior is the same information as AddGaugeInformation, at the pose's value: zero residual there,

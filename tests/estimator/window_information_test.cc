@@ -52,7 +52,6 @@ TEST(WindowInformation, EqualsTheGeneralSchurComplementOfTheDepths) {
   EXPECT_GT(g.norm(), 1.0);  // the noise, the prior's offset and the depth errors make a gradient
   EXPECT_LT((information.H() - H).norm(), 1e-10 * H.norm());
   EXPECT_LT((information.g() - g).norm(), 1e-10 * g.norm());
-  EXPECT_EQ(information.BlockSizes(), (std::vector<int>{6, 9, 6, 9, 6, 9}));
 }
 
 TEST(WindowInformation, RefusesABlockOutsideTheWindow) {
