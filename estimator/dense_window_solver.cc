@@ -65,6 +65,9 @@ struct Linearization {
   Eigen::MatrixXd H;
   Eigen::VectorXd g;
   std::vector<WindowInformation::EliminatedDepth> depths;
+  // The depths' elimination (WindowInformation::depth_fill_H/g), which H and g hold subtracted.
+  Eigen::MatrixXd fill_H;
+  Eigen::VectorXd fill_g;
   Eigen::VectorXd diagonal;  // of the states' information before the depths' elimination: the damping's
   int residuals = 0;
 };
@@ -78,6 +81,7 @@ bool Linearize(const DenseWindowProblem& p, Linearization* out) {
     if (!info.AddFactor(*f.cost, f.loss, blocks)) return false;
     out->residuals += f.cost->num_residuals();
   }
+  info.SeparateDepthFill();
   out->depths.resize(p.tracks.size());
   for (std::size_t i = 0; i < p.tracks.size(); ++i) {
     const auto& reps = p.tracks[i].reprojections;
@@ -90,24 +94,26 @@ bool Linearize(const DenseWindowProblem& p, Linearization* out) {
     if (!info.AddPrior(*p.prior)) return false;
     out->residuals += static_cast<int>(p.prior->r.size());
   }
+  out->fill_H = info.depth_fill_H();
+  out->fill_g = info.depth_fill_g();
   out->H = std::move(info.mutable_H());
-  out->g = info.g();
+  out->H -= out->fill_H;
+  out->g = info.g() - out->fill_g;
   if (p.hold_oldest_pose) {
     out->H.topRows<kPoseTangentSize>().setZero();
     out->H.leftCols<kPoseTangentSize>().setZero();
     out->H.topLeftCorner<kPoseTangentSize, kPoseTangentSize>().setIdentity();
     out->g.head<kPoseTangentSize>().setZero();
     // A held pose has no step: the depths' couplings to it drop out too.
+    out->fill_H.topRows<kPoseTangentSize>().setZero();
+    out->fill_H.leftCols<kPoseTangentSize>().setZero();
+    out->fill_g.head<kPoseTangentSize>().setZero();
     for (WindowInformation::EliminatedDepth& d : out->depths)
       d.w.erase(std::remove_if(d.w.begin(), d.w.end(),
                                [](const auto& column_w) { return column_w.first < kPoseTangentSize; }),
                 d.w.end());
   }
-  out->diagonal = out->H.diagonal();
-  for (const WindowInformation::EliminatedDepth& d : out->depths)
-    if (d.h_dd != 0.0)
-      for (const auto& [column, w_p] : d.w)
-        out->diagonal.segment<kPoseTangentSize>(column) += w_p.cwiseAbs2() / d.h_dd;
+  out->diagonal = out->H.diagonal() + out->fill_H.diagonal();
   return out->H.allFinite() && out->g.allFinite();
 }
 
@@ -117,15 +123,18 @@ double DepthDamping(const WindowInformation::EliminatedDepth& d, double radius) 
 }
 
 // The damped system over the states: the depths are eliminated with their damped pivots h_dd + lambda_d, so
-// the Schur complement the linearization holds (undamped pivots) gains (1/h_dd - 1/(h_dd + lambda_d)) times
-// each track's w w^T and w b_d.
+// the Schur complement the linearization holds (undamped pivots) gains c_d = 1/h_dd - 1/(h_dd + lambda_d)
+// times each track's w w^T and w b_d. With lambda_d = h_dd / radius (a pivot within the clamp), c_d h_dd =
+// 1 / (radius + 1) for every track: the linearization's whole fill, scaled once. Only a pivot below the
+// clamp is corrected on its own.
 void DampedSystem(const Linearization& lin, double radius, Eigen::MatrixXd* A, Eigen::VectorXd* b) {
-  *A = lin.H;
+  const double scale = 1.0 / (radius + 1.0);
+  *A = lin.H + scale * lin.fill_H;
   A->diagonal() += lin.diagonal.cwiseMax(kMinDiagonal).cwiseMin(kMaxDiagonal) / radius;
-  *b = -lin.g;
+  *b = -lin.g - scale * lin.fill_g;
   for (const WindowInformation::EliminatedDepth& d : lin.depths) {
-    if (d.h_dd == 0.0) continue;
-    const double c = 1.0 / d.h_dd - 1.0 / (d.h_dd + DepthDamping(d, radius));
+    if (d.h_dd == 0.0 || d.h_dd >= kMinDiagonal) continue;
+    const double c = 1.0 / d.h_dd - 1.0 / (d.h_dd + DepthDamping(d, radius)) - scale / d.h_dd;
     for (const auto& [p, w_p] : d.w) {
       b->segment<kPoseTangentSize>(p) -= c * d.b_d * w_p;
       for (const auto& [q, w_q] : d.w)

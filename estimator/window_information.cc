@@ -121,17 +121,29 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
     w.front().second.noalias() += Ja.transpose() * Jd;
     w.emplace_back(observer, Jo.transpose() * Jd);
   }
-  // The depth eliminated: H -= w w^T / h_dd, g -= w b_d / h_dd over the track's poses.
+  // The depth eliminated: H -= w w^T / h_dd, g -= w b_d / h_dd over the track's poses (or the fill +=).
   if (!(h_dd > eigen_threshold)) return true;
   d.h_dd = h_dd;
   d.b_d = b_d;
   for (const auto& [column_p, w_p] : w) {
     const Vector6d f = w_p / h_dd;
-    g_.segment<kPose>(column_p) -= f * b_d;
-    for (const auto& [column_q, w_q] : w)
-      H_.block<kPose, kPose>(column_p, column_q).noalias() -= f * w_q.transpose();
+    if (separate_fill_) {
+      fill_g_.segment<kPose>(column_p) += f * b_d;
+      for (const auto& [column_q, w_q] : w)
+        fill_H_.block<kPose, kPose>(column_p, column_q).noalias() += f * w_q.transpose();
+    } else {
+      g_.segment<kPose>(column_p) -= f * b_d;
+      for (const auto& [column_q, w_q] : w)
+        H_.block<kPose, kPose>(column_p, column_q).noalias() -= f * w_q.transpose();
+    }
   }
   return true;
+}
+
+void WindowInformation::SeparateDepthFill() {
+  separate_fill_ = true;
+  fill_H_.setZero(H_.rows(), H_.cols());
+  fill_g_.setZero(g_.size());
 }
 
 bool WindowInformation::AddPrior(const LinearPrior& prior) {

@@ -61,6 +61,12 @@ class WindowInformation {
   // Adds a linear prior at its blocks' current values (PriorInformationAtCurrentValues). False when one of
   // its blocks is not the window's.
   bool AddPrior(const LinearPrior& prior);
+  // From now on, AddTrack adds the depths' elimination (sum over tracks of w w^T / h_dd and w b_d / h_dd)
+  // to depth_fill_H() and depth_fill_g() instead of subtracting it from H() and g(): H() - depth_fill_H()
+  // is then the information with the depths eliminated. A solve that damps the depths rescales the fill.
+  void SeparateDepthFill();
+  const Eigen::MatrixXd& depth_fill_H() const { return fill_H_; }
+  const Eigen::VectorXd& depth_fill_g() const { return fill_g_; }
 
   int frames() const { return static_cast<int>(pose_blocks_.size()); }
   // Symmetric, both triangles filled.
@@ -83,6 +89,9 @@ class WindowInformation {
   std::vector<double*> speed_bias_blocks_;
   Eigen::MatrixXd H_;
   Eigen::VectorXd g_;
+  bool separate_fill_ = false;
+  Eigen::MatrixXd fill_H_;
+  Eigen::VectorXd fill_g_;
 };
 
 }  // namespace vigil::estimator

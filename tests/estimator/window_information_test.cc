@@ -54,6 +54,25 @@ TEST(WindowInformation, EqualsTheGeneralSchurComplementOfTheDepths) {
   EXPECT_LT((information.g() - g).norm(), 1e-10 * g.norm());
 }
 
+// With the fill kept apart, H() and g() hold the information before the depths' elimination, and
+// subtracting the fill gives the eliminated one.
+TEST(WindowInformation, TheSeparateDepthFillIsWhatTheEliminationSubtracts) {
+  testing::SyntheticWindow w(3);
+  auto build = [&](bool separate) {
+    WindowInformation information(w.pose_blocks, w.speed_bias_blocks);
+    for (const MarginalizationTerm& t : w.terms)
+      EXPECT_TRUE(information.AddFactor(*t.cost, nullptr, {t.blocks.begin(), t.blocks.end()}));
+    if (separate) information.SeparateDepthFill();
+    for (const auto& track : w.track_terms)
+      EXPECT_TRUE(information.AddTrack(track.data(), track.data() + track.size(), &w.loss, 1e-8));
+    return information;
+  };
+  const WindowInformation eliminated = build(false), separate = build(true);
+  EXPECT_GT(separate.depth_fill_H().norm(), 1e-3 * eliminated.H().norm());
+  EXPECT_LT((separate.H() - separate.depth_fill_H() - eliminated.H()).norm(), 1e-12 * eliminated.H().norm());
+  EXPECT_LT((separate.g() - separate.depth_fill_g() - eliminated.g()).norm(), 1e-12 * eliminated.g().norm());
+}
+
 TEST(WindowInformation, RefusesABlockOutsideTheWindow) {
   std::vector<double> pose = testing::Pose(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
   std::vector<double> speed_bias(kSpeedBiasSize, 0.0), other_pose = pose;
