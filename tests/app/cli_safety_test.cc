@@ -195,12 +195,12 @@ TEST_F(Cli, ACrossKeyErrorFromASetNamesTheSet) {
                 "vigil: error: --set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
 }
 
-TEST_F(Cli, AnOutOfRangeNoiseDensityWritesNoInfAndNamesTheFileLineAndColumn) {
+// Refused where the config says it (it used to be caught only as a non-finite value in the written IMU).
+TEST_F(Cli, AnOutOfRangeNoiseDensityIsRefusedAtItsConfigLine) {
   const std::string loud =
       tmp_.File("loud.yaml", "duration_s: 2\nimu:\n  noise:\n    accel_noise_density: 1e308\n");
   const std::string out = tmp_.path().string() + "/loud";
-  ExpectRefused("simulate " + loud + " -o " + out,
-                out + "/imu.csv:2: a_RS_S_x [m s^-2]: cannot write the non-finite");
+  ExpectRefused("simulate " + loud + " -o " + out, loud + ":4: imu.noise.accel_noise_density: must be in");
   EXPECT_FALSE(fs::exists(out));
 }
 

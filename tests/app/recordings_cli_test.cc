@@ -198,8 +198,10 @@ TEST(SharedEurocCli, RunSaysThePlatformDidNotMove) {
 
   const fs::path still = tmp.path() / "still";
   const CliResult s = Vigil(tmp, "run " + config + " -o " + still.string());
-  EXPECT_EQ(s.status, 0) << s.err;
+  // The shared part of the flight barely moves: its ATE is rightly not computed (min_alignment_extent_m).
+  EXPECT_EQ(s.status, 1) << s.err;
   const nlohmann::json ms = nlohmann::json::parse(ReadFile(still / "metrics.json"));
+  EXPECT_EQ(ms["status"], "inconclusive") << ms.dump();
   EXPECT_LT(ms["estimator"]["initialized_at_s"].get<double>(), 1.0) << ms.dump();
 }
 

@@ -18,10 +18,11 @@ using vigil::testing::TempDir;
 
 // Runs the small sweep with fake results; the run of `failing_id` throws.
 experiments::SweepSpec RunFakeSweep(const TempDir& dir, const std::string& failing_id = "") {
+  // Never read (the runs are fake), but a sweep refuses absent inputs.
+  const std::string templates = dir.File("none.yaml", "# never read\n");
   const experiments::SweepSpec spec = experiments::LoadSweepSpec(WriteSmallSweep(
-      dir,
-      "  trunc: threshold\n  dtw: {type: dtw, dtw: {templates_file: none.yaml}}\n  original: none\n"
-      "  hampel: hampel\ntable_methods: [trunc, dtw, original]\n"));
+      dir, "  trunc: threshold\n  dtw: {type: dtw, dtw: {templates_file: " + templates +
+               "}}\n  original: none\n  hampel: hampel\ntable_methods: [trunc, dtw, original]\n"));
   experiments::SweepRunOptions options;
   options.threads = 2;
   experiments::RunSweep(
