@@ -168,7 +168,7 @@ int Run(const Arguments& a) {
     feed_imu_until(frame.t_ns);
     std::vector<std::pair<size_t, Eigen::VectorXf>> uv;
     uv.reserve(frame.uv.size());
-    for (const auto& [id, px] : frame.uv) uv.emplace_back(id, px.cast<float>());
+    for (const auto& [id, px] : frame.uv) uv.emplace_back(OpenvinsFeatureId(id), px.cast<float>());
     vio.FeedTracks(seconds(frame.t_ns), uv);
     if (!vio.initialized()) continue;
     const int64_t t_ns = t0_ns + std::llround(vio.state_time_s() * 1e9);

@@ -33,7 +33,7 @@ std::string EstimatorConfig(const Settings& s) {
     << "calib_cam_extrinsics: false\ncalib_cam_intrinsics: false\ncalib_cam_timeoffset: false\n"
     << "calib_imu_intrinsics: false\ncalib_imu_g_sensitivity: false\n"
     << "max_clones: " << s.max_clones << "\nmax_slam: " << s.max_slam << "\n"
-    << "max_slam_in_update: 25\nmax_msckf_in_update: 40\nnum_aruco: 1024\ndt_slam_delay: 1\n"
+    << "max_slam_in_update: 25\nmax_msckf_in_update: 40\nnum_aruco: " << kArucoTags << "\ndt_slam_delay: 1\n"
     << "gravity_mag: " << s.gravity_mps2 << "\n"
     << "feat_rep_msckf: \"GLOBAL_3D\"\nfeat_rep_slam: \"GLOBAL_3D\"\n"
     << "feat_rep_aruco: \"GLOBAL_3D\"\n"

@@ -4,12 +4,18 @@
 // parser.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
 #include "recording.h"
 
 namespace vigil_openvins {
+
+// OpenVINS keeps feature ids up to 4 x num_aruco for ArUco tags (updated as such); vigil's track ids are
+// shifted past them.
+inline constexpr int kArucoTags = 1024;
+inline size_t OpenvinsFeatureId(size_t vigil_id) { return vigil_id + 4 * kArucoTags + 1; }
 
 enum class InitMode {
   kOpenvins,     // OpenVINS's own initializer (dynamic: the platform may move from the start)
