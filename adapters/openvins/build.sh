@@ -50,7 +50,8 @@ fi
 
 # The source's commit: a tarball of `git archive` carries it in its header; a clone has it checked out.
 if [[ -f "$source" ]]; then
-  commit=$(gzip -dc "$source" | git get-tar-commit-id) || commit=""
+  # (git stops reading after the header, so gzip's broken pipe is not a failure)
+  commit=$(set +o pipefail; gzip -dc "$source" 2> /dev/null | git get-tar-commit-id) || commit=""
 elif [[ -d "$source/ov_msckf" ]] && git -C "$source" rev-parse --verify -q HEAD > /dev/null; then
   commit=$(git -C "$source" rev-parse HEAD)
   if [[ -n "$(git -C "$source" status --porcelain -- ov_core ov_init ov_msckf)" ]]; then
