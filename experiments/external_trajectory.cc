@@ -115,6 +115,7 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
   const std::string layout =
       format == TrajectoryFormat::kTum ? "TUM 't x y z qx qy qz qw'" : "EuRoC 't,x,y,z,qw,qx,qy,qz'";
   int line_number = 0;
+  double previous_t = 0.0;  // the previous row's time as written, when nanoseconds
   for (std::size_t begin = 0; begin < text.size();) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) end = text.size();
@@ -150,15 +151,23 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
     const double norm2 = pose.q_WB.squaredNorm();
     if (!(norm2 > 1e-6)) return fail(line_number, "the quaternion is zero");
     if (std::abs(norm2 - 1.0) > 8 * std::numeric_limits<double>::epsilon()) pose.q_WB.normalize();
-    if (!out.trajectory.empty() && pose.t_ns <= out.trajectory.back().t_ns)
+    if (!out.trajectory.empty() && pose.t_ns <= out.trajectory.back().t_ns) {
+      // Seconds read as nanoseconds: 0.033 and 0.067 both round to 0 ns, inside a recording that starts at 0.
+      double t = 0.0;
+      if (unit == TimeUnit::kNanoseconds && ParseDouble(f[0], &t) && t > previous_t)
+        return fail(line_number,
+                    "timestamps " + FormatDouble(previous_t) + " and " + std::string(f[0]) +
+                        " ns are the same nanosecond: a unit mix-up? (estimator.external.time_unit)");
       return fail(line_number, "timestamps are not strictly increasing (" + std::string(f[0]) + " after " +
                                    std::to_string(out.trajectory.back().t_ns) + " ns)");
+    }
     if (pose.t_ns < t_first_ns - kExternalTimeSlack_ns || pose.t_ns > t_last_ns + kExternalTimeSlack_ns)
       return fail(line_number, "timestamp " + std::string(f[0]) +
                                    (unit == TimeUnit::kSeconds ? " s" : " ns") +
                                    " lies outside the recording (" + FormatFixed(NsToS(t_first_ns), 3) +
                                    " .. " + FormatFixed(NsToS(t_last_ns), 3) +
                                    " s): a unit mix-up? (estimator.external.time_unit)");
+    if (unit == TimeUnit::kNanoseconds) ParseDouble(f[0], &previous_t);
     out.trajectory.push_back(pose);
   }
   if (out.trajectory.empty()) return fail(0, "the trajectory is empty (no rows)");

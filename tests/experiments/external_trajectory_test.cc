@@ -80,6 +80,18 @@ TEST(ExternalTrajectory, EveryBadFileIsAReasonNotACrash) {
   // Seconds where nanoseconds are expected: a few ns after the epoch, also outside.
   EXPECT_NE(failure("2.5 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds).find("outside the recording"),
             std::string::npos);
+  // Seconds where nanoseconds are expected, in a recording that starts at 0: the first rows round to the
+  // same nanosecond, which is a unit mix-up, not time going backwards.
+  const std::string seconds_as_ns =
+      ReadExternalTrajectory(tmp.File("s.txt", "0.000 0 0 0 0 0 0 1\n0.033 0 0 0 0 0 0 1\n"),
+                             TrajectoryFormat::kTum, TimeUnit::kNanoseconds, 0, kLast)
+          .failure;
+  EXPECT_NE(seconds_as_ns.find("s.txt:2: timestamps 0 and 0.033 ns are the same nanosecond: a unit mix-up?"),
+            std::string::npos)
+      << seconds_as_ns;
+  EXPECT_NE(failure("1500000000 0 0 0 0 0 0 1\n1500000000 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds)
+                .find("not strictly increasing"),
+            std::string::npos);
   EXPECT_NE(ReadExternalTrajectory(tmp.path() / "absent.txt", TrajectoryFormat::kTum, TimeUnit::kSeconds,
                                    kFirst, kLast)
                 .failure.find("wrote no trajectory"),
