@@ -69,13 +69,14 @@ void ResultsCsvWriter::Commit() {
 }
 
 std::string ResultsCsvWriter::TimingHeader() {
-  return "#id,simulate_s,templates_s,detect_s,estimate_s,evaluate_s,total_s";
+  return "#id,simulate_s,templates_s,detect_s,estimate_s,evaluate_s,total_s,external_process_s";
 }
 
 std::string ResultsCsvWriter::TimingRow(const SweepRunRef& run, const nlohmann::json& m) {
   std::string r = run.id;
   for (const char* stage : {"simulate", "templates", "detect", "estimate", "evaluate", "total"})
     r += "," + Number(evaluation::MetricNumber(m, {"wall_time_s", stage}));
+  r += "," + Number(evaluation::MetricNumber(m, {"external", "wall_time_s", "process"}));  // empty: builtin
   return r;
 }
 
@@ -93,6 +94,7 @@ std::string ResultsCsvWriter::Header() const {
   h += ",false_positive_rate,segment_precision,segment_f1";
   h += ",estimator_resets";
   h += ",nees_position_mean,nees_orientation_mean";
+  h += ",coverage";
   return h;
 }
 
@@ -126,6 +128,7 @@ std::string ResultsCsvWriter::Row(const SweepRunRef& run, const SweepCell& cell,
   r += "," + Number(evaluation::MetricNumber(m, {"estimator", "resets"}));
   r += "," + Number(evaluation::MetricNumber(m, {"nees", "position", "mean"}));
   r += "," + Number(evaluation::MetricNumber(m, {"nees", "orientation", "mean"}));
+  r += "," + Number(evaluation::MetricNumber(m, {"coverage"}));
   return r;
 }
 
