@@ -107,7 +107,19 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
                                    CurrentExecutablePath()};
   ChildProcessOptions child;
   for (const std::string& arg : options.command) child.argv.push_back(ExpandPlaceholders(arg, values));
-  json["command"] = child.argv;
+  // metrics.json names the command as configured and where its placeholders pointed, as paths that hold
+  // after the run: inside the run directory relative to it; the temporary recording, removed, as null.
+  const auto kept = [&](const fs::path& path) -> nlohmann::json {
+    if (!options.keep_recording) return nullptr;
+    return fs::absolute(path).lexically_relative(fs::absolute(run_dir)).generic_string();
+  };
+  json["command"] = options.command;
+  json["placeholders"] = {{"recording", kept(recording->path())},
+                          {"mav0", kept(recording->path() / euroc_files::kMav0)},
+                          {"config", kept(recording->path() / dataset_files::kConfig)},
+                          {"output", "external/output"},
+                          {"seed", values.seed},
+                          {"vigil", values.vigil}};
   std::string why;
   child.program = ResolveExecutable(child.argv.front(), &why);
   if (child.program.empty()) {

@@ -184,7 +184,15 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   summary.wall.total_s = SecondsSince(start);
   nlohmann::json metrics = RunMetricsJson(summary, result, evaluation, detection.json);
   if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
-  if (external) metrics["external"] = external->json;
+  if (external) {
+    metrics["external"] = external->json;
+    // What vigil knows of another estimator (no initializer, keyframes or timing of its own to report).
+    metrics["estimator"] = {
+        {"backend", "external"},
+        {"initialized_at_s",
+         result.trajectory.empty() ? nlohmann::json() : nlohmann::json(result.initialized_at_s)},
+        {"output_poses", result.trajectory.size()}};
+  }
   if (data.frontend) {
     metrics["frontend"] = data.frontend->metrics;
     metrics["wall_time_s"]["track"] = data.frontend->track_s;  // rendering (simulated runs) and tracking

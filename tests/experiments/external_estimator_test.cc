@@ -54,6 +54,30 @@ TEST(ExternalEstimator, AGoodTrajectoryIsEvaluatedLikeVigilsOwn) {
   EXPECT_FALSE(fs::exists(run / "external/recording"));  // a temporary folder, removed
 }
 
+TEST(ExternalEstimator, MetricsNameNoStagingPathAndNoBuiltInEstimatorState) {
+  TempDir tmp;
+  const nlohmann::json m = RunFake(tmp, "good");
+  ASSERT_EQ(m["status"], "ok") << Reason(m);
+  const nlohmann::json& external = m["external"];
+  // The command as configured; where its placeholders pointed, as paths that still hold after the run.
+  EXPECT_EQ(external["command"][2], "{output}");
+  EXPECT_EQ(external["command"][3], "{recording}");
+  EXPECT_EQ(m.dump().find(".tmp-"), std::string::npos) << external.dump();
+  EXPECT_EQ(external["placeholders"]["output"], "external/output");
+  EXPECT_TRUE(external["placeholders"]["recording"].is_null());  // temporary, removed
+  const nlohmann::json kept =
+      RunToDirectory(kPaper, ExternalOverrides("good", {"estimator.external.keep_recording=true"}),
+                     RunOptions{}, tmp.path() / "kept", false);
+  EXPECT_EQ(kept["external"]["placeholders"]["recording"], "external/recording");
+  EXPECT_EQ(kept["external"]["placeholders"]["mav0"], "external/recording/mav0");
+  // The estimator block says what vigil knows of another estimator, not vigil's own initializer's state.
+  const nlohmann::json& estimator = m["estimator"];
+  EXPECT_EQ(estimator["backend"], "external");
+  EXPECT_EQ(estimator["output_poses"], 61);
+  EXPECT_FALSE(estimator.contains("init"));
+  EXPECT_FALSE(estimator.contains("keyframes"));
+}
+
 TEST(ExternalEstimator, TheRecordingIsEurocWithTheRunsNoise) {
   TempDir tmp;
   const nlohmann::json m =
