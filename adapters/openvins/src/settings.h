@@ -24,11 +24,11 @@ enum class InitMode {
 
 struct Settings {
   InitMode init = InitMode::kOpenvins;
-  double gravity_mps2 = 9.81;         // magnitude of gravity
-  double pixel_sigma_px = 1.0;        // std of a feature's pixel in the MSCKF and SLAM updates
-  int max_clones = 11;                // sliding window of cloned poses
-  int max_slam = 50;                  // features kept in the state
-  double init_window_s = 2.0;         // IMU and tracks the initializer looks at
+  double gravity_mps2 = 9.81;   // magnitude of gravity
+  double pixel_sigma_px = 1.0;  // std of a feature's pixel in the MSCKF and SLAM updates
+  int max_clones = 11;          // sliding window of cloned poses
+  int max_slam = 50;            // features kept in the state
+  double init_window_s = 2.0;   // IMU and tracks the initializer looks at
   // Features the dynamic initializer uses at most; it gives up while fewer than 3/4 of this many are tracked
   // over its window, so OpenVINS's usual 50 never starts on paper.yaml's 36-point house.
   int init_max_features = 30;
