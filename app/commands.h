@@ -33,6 +33,7 @@ void AddSimulateCommand(CLI::App& root);
 void AddTemplatesCommand(CLI::App& root);
 void AddCleanCommand(CLI::App& root);
 void AddInjectCommand(CLI::App& root);
+void AddImportCommand(CLI::App& root);
 void AddTrackCommand(CLI::App& root);
 void AddPlotCommand(CLI::App& root);
 void AddEvalCommand(CLI::App& root);

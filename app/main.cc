@@ -1,16 +1,15 @@
 // vigil: visual-inertial odometry under IMU faults. See README.md and docs/cli.md.
-#include <charconv>
 #include <cstdint>
-#include <cstdlib>
 #include <map>
 #include <optional>
-
-#include <glog/logging.h>
 
 #include "app/cli_main.h"
 #include "app/commands.h"
 #include "app/set_args.h"
+#include "app/solver_logging.h"
+#include "core/config.h"
 #include "core/error.h"
+#include "experiments/child_process.h"
 
 namespace vigil::app {
 namespace {
@@ -19,23 +18,6 @@ std::map<const CLI::App*, Action>& Actions() {
   return actions;
 }
 
-// Ceres reports through glog. Its warnings are the Levenberg-Marquardt loop's own bookkeeping (a linear solve
-// that failed, e.g. on a badly conditioned point of the initial bundle adjustment, and is retried with more
-// damping), printed from worker threads across a sweep's progress bar; vigil checks every solve's outcome
-// itself. Errors still show; GLOG_minloglevel=0 in the environment shows the warnings again.
-void QuietSolverWarnings() {
-  if (std::getenv("GLOG_minloglevel") == nullptr) FLAGS_minloglevel = google::GLOG_ERROR;
-}
-
-// glog, initialized once, so that its first message does not come with "WARNING: Logging before
-// InitGoogleLogging() is written to STDERR". Messages go to stderr only (no log files in /tmp) unless the
-// environment asks for files (GLOG_log_dir or GLOG_logtostderr).
-void InitLogging(const char* argv0) {
-  if (std::getenv("GLOG_log_dir") == nullptr && std::getenv("GLOG_logtostderr") == nullptr)
-    FLAGS_logtostderr = true;
-  google::InitGoogleLogging(argv0);
-  QuietSolverWarnings();
-}
 }  // namespace
 
 void SetAction(CLI::App* cmd, Action action) { Actions()[cmd] = std::move(action); }
@@ -49,16 +31,7 @@ void ConfigArgs::AddTo(CLI::App* cmd, bool optional) {
 
 std::vector<std::string> ConfigArgs::AllOverrides() const {
   std::vector<std::string> all = overrides;
-  if (!seed.empty()) {
-    // The range of a config's `seed` (an integer key); beyond it CLI11 would clamp silently.
-    int64_t value = -1;
-    const char* end = seed.data() + seed.size();
-    const auto [ptr, ec] = std::from_chars(seed.data(), end, value);
-    if (ec != std::errc() || ptr != end || value < 0)
-      throw InputError("--seed: expected an integer from 0 to 9223372036854775807 (2^63 - 1), got '" + seed +
-                       "'");
-    all.push_back("seed=" + std::to_string(value));
-  }
+  if (!seed.empty()) all.push_back("seed=" + std::to_string(config::ParseSeedArgument(seed)));
   return all;
 }
 
@@ -66,7 +39,7 @@ std::vector<std::string> ConfigArgs::AllOverrides() const {
 
 int main(int argc, char** argv) {
   using namespace vigil::app;
-  InitLogging(argc > 0 ? argv[0] : "vigil");
+  InitSolverLogging(argc > 0 ? argv[0] : "vigil");
   CLI::App root{"vigil: a laboratory for visual-inertial odometry under IMU faults"};
   root.require_subcommand(1);
   root.set_version_flag("--version", "vigil 0.1.0");
@@ -75,6 +48,7 @@ int main(int argc, char** argv) {
   AddTemplatesCommand(root);
   AddCleanCommand(root);
   AddInjectCommand(root);
+  AddImportCommand(root);
   AddTrackCommand(root);
   AddRunCommand(root);
   AddEstimateCommand(root);
@@ -92,7 +66,13 @@ int main(int argc, char** argv) {
     // Nested subcommands (`vigil plot run`): the action sits on the innermost parsed one.
     while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
     auto it = Actions().find(cmd);
-    if (it != Actions().end()) return RunReportingErrors(it->second);
+    if (it == Actions().end()) continue;
+    try {
+      return RunReportingErrors(it->second);
+    } catch (const vigil::experiments::Interrupted& interrupted) {
+      // An external program was running: it and everything it started are gone, the temporary files too.
+      vigil::experiments::EndWithSignal(interrupted.signal);
+    }
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "core/config.h"
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -27,6 +28,16 @@ std::string Bounds::Describe() const {
 }
 
 bool InBounds(double x, const Bounds& b) { return b.Contains(x); }
+
+uint64_t ParseSeedArgument(const std::string& text) {
+  int64_t value = -1;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || value < 0)
+    throw InputError("--seed: expected an integer from 0 to 9223372036854775807 (2^63 - 1), got '" + text +
+                     "'");
+  return static_cast<uint64_t>(value);
+}
 
 namespace {
 bool ScalarText(const YAML::Node& n, std::string* text, std::string* why) {

@@ -221,6 +221,10 @@ void LoadNode(const YAML::Node& node, const std::string& origin, Options& option
 // Turns "a.b.c" and a value node into the nested mapping {a: {b: {c: value}}}.
 YAML::Node NestKey(const std::string& key_path, const YAML::Node& value);
 
+// The `--seed` argument of every command, read one way: a decimal integer from 0 to 2^63 - 1 and nothing
+// else (no sign, no spaces); InputError "--seed: expected ..., got 'TEXT'" otherwise.
+uint64_t ParseSeedArgument(const std::string& text);
+
 // Applies one `key.path=value` override (the value is read as a YAML scalar or flow sequence).
 // Errors name the override: "--set glitch.mean: must be ...".
 template <class Options>

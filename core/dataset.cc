@@ -1,4 +1,5 @@
 #include "core/dataset.h"
+#include "core/ground_truth_gap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/pose_checks.h"
 
 namespace vigil {
 namespace fs = std::filesystem;
@@ -64,7 +66,7 @@ Eigen::Quaterniond AsUnit(const Eigen::Quaterniond& q) {
 
 Eigen::Quaterniond ReadUnitQuaternion(const CsvReader& r, double w, double x, double y, double z) {
   const Eigen::Quaterniond q(w, x, y, z);
-  if (std::abs(q.norm() - 1.0) > 1e-3) r.Fail("quaternion is not unit (norm " + FormatDouble(q.norm()) + ")");
+  if (const std::string problem = QuaternionNormProblem(q); !problem.empty()) r.Fail(problem);
   return AsUnit(q);
 }
 
@@ -209,11 +211,14 @@ std::vector<NavState> ReadGroundTruthCsv(const TextFile& file) {
     s.b_a = Eigen::Vector3d(rate(14), rate(15), rate(16));
     if (!out.empty()) {
       const double dt_s = NsToS(s.t_ns - out.back().t_ns);
+      if (s.t_ns - out.back().t_ns > kMaxGroundTruthGap_ns) r.Fail(GroundTruthGapReason(dt_s));
       const double step_m = (s.p_W - out.back().p_W).norm();
       if (step_m > kMaxGroundTruthSpeed_mps * dt_s)
         r.Fail("position jumps " + FormatDouble(step_m) + " m in " + FormatDouble(dt_s) + " s (" +
                FormatDouble(step_m / dt_s) + " m/s, beyond " + FormatDouble(kMaxGroundTruthSpeed_mps) +
                " m/s): a teleport no motion explains");
+      if (const std::string problem = RotationStepProblem(out.back().q_WB, s.q_WB); !problem.empty())
+        r.Fail(problem);
     }
     out.push_back(s);
   }
@@ -508,7 +513,8 @@ Trajectory ReadTumTrajectory(const TextFile& file) {
     last = p.t_ns;
     p.p_W = Eigen::Vector3d(v[1], v[2], v[3]);
     const Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
-    if (std::abs(q.norm() - 1.0) > 1e-3) throw InputError(Located(path, line, "quaternion is not unit"));
+    if (const std::string problem = QuaternionNormProblem(q); !problem.empty())
+      throw InputError(Located(path, line, problem));
     p.q_WB = AsUnit(q);
     out.push_back(p);
   }

@@ -139,11 +139,13 @@ bool IsFile(const fs::path& path) {
 
 }  // namespace
 
-std::string EurocImuSensorYaml(const EurocImuSensor& s) {
+std::string EurocImuSensorYaml(const EurocImuSensor& s, const std::string& comment) {
   return "%YAML:1.0\n"
          "# Default imu sensor yaml file (EuRoC layout, written by vigil)\n"
          "sensor_type: imu\n"
-         "comment: vigil simulated IMU\n\n"
+         "comment: " +
+         comment +
+         "\n\n"
          "# Sensor extrinsics wrt. the body-frame.\n" +
          MatrixYaml(s.T_BS) + "rate_hz: " + FormatDouble(s.rate_hz) +
          "\n\n# inertial sensor noise model parameters (static)\n"
@@ -161,11 +163,13 @@ std::string EurocImuSensorYaml(const EurocImuSensor& s) {
          "    # [ m / s^3 / sqrt(Hz) ]   ( accel bias diffusion )\n";
 }
 
-std::string EurocCameraSensorYaml(const CameraModel& c) {
+std::string EurocCameraSensorYaml(const CameraModel& c, const std::string& comment) {
   return "%YAML:1.0\n"
          "# General sensor definitions.\n"
          "sensor_type: camera\n"
-         "comment: vigil rendered camera\n\n"
+         "comment: " +
+         comment +
+         "\n\n"
          "# Sensor extrinsics wrt. the body-frame.\n" +
          MatrixYaml(c.T_BC_iso()) +
          "\n# Camera specific definitions.\n"

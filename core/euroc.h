@@ -57,10 +57,12 @@ struct CameraImage {
   int list_line = 0;
 };
 
-// sensor.yaml text (with the %YAML:1.0 line and EuRoC's comments).
-std::string EurocImuSensorYaml(const EurocImuSensor& sensor);
+// sensor.yaml text (with the %YAML:1.0 line and EuRoC's comments); `comment` names the sensor.
+std::string EurocImuSensorYaml(const EurocImuSensor& sensor,
+                               const std::string& comment = "vigil simulated IMU");
 // From the camera model: T_BS = T_BC, resolution, intrinsics, distortion (imu0's T_BS taken as identity).
-std::string EurocCameraSensorYaml(const CameraModel& camera);
+std::string EurocCameraSensorYaml(const CameraModel& camera,
+                                  const std::string& comment = "vigil rendered camera");
 // cam0/data.csv of images named <timestamp>.png.
 std::string EurocImageListCsv(const std::vector<int64_t>& times_ns);
 // The image file name of a timestamp: "<t_ns>.png".

@@ -143,6 +143,7 @@ void WriteOutputManifest(const fs::path& dir) {
 
 void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>& inputs,
                             const std::string& option) {
+  if (output.empty()) throw InputError(option + ": the output path is empty (name a directory to write)");
   const fs::path out = Resolved(output);
   std::error_code ec;
   for (const fs::path& input : inputs) {
@@ -157,12 +158,17 @@ void RefuseOutputOverInputs(const fs::path& output, const std::vector<fs::path>&
       relation = "lies inside the input ";
     else
       continue;
-    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() +
+    // An input reached through a link (a recording's image folder linked elsewhere) is named with its target.
+    fs::path plain = fs::absolute(input, ec).lexically_normal();
+    if (!plain.has_filename()) plain = plain.parent_path();
+    const std::string target = in == plain ? "" : " (" + in.string() + ")";
+    throw InputError(option + " " + output.string() + ": the output " + relation + input.string() + target +
                      ", which it would overwrite; choose an output outside every input");
   }
 }
 
 StagedDirectory::StagedDirectory(fs::path final_dir, bool force) : final_(std::move(final_dir)) {
+  if (final_.empty()) throw InputError("-o: the output path is empty (name a directory to write)");
   if (final_.has_filename() == false) final_ = final_.parent_path();  // "out/" -> "out"
   RefuseExisting(final_, force);
   if (IsNonEmptyDirectory(final_)) {

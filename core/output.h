@@ -33,8 +33,8 @@ std::string EntryFingerprint(const std::filesystem::path& entry);
 // Writes the manifest of `dir` listing its current top-level entries.
 void WriteOutputManifest(const std::filesystem::path& dir);
 
-// Refuses (InputError) `output` when it is one of `inputs`, contains one, or lies inside one (a directory).
-// Missing inputs are ignored; `option` names the output in the message (e.g. "-o").
+// Refuses (InputError) `output` when it is empty, is one of `inputs`, contains one, or lies inside one (a
+// directory). Missing inputs are ignored; `option` names the output in the message (e.g. "-o").
 void RefuseOutputOverInputs(const std::filesystem::path& output,
                             const std::vector<std::filesystem::path>& inputs,
                             const std::string& option = "-o");

@@ -1,51 +1,39 @@
 #include "core/recording_copy.h"
 
-#include "core/error.h"
-#include "core/output.h"
+#include "core/recording_files.h"
 
 namespace vigil {
 namespace fs = std::filesystem;
-namespace {
-
-bool IsImageDir(const fs::path& relative) {
-  const fs::path parent = relative.parent_path().filename();
-  return relative.filename() == "data" && parent.string().rfind("cam", 0) == 0;
-}
-
-}  // namespace
 
 RecordingCopyStats CopyRecordingTree(const fs::path& source, const fs::path& dest,
                                      const std::set<std::string>& skip) {
   RecordingCopyStats stats;
-  const fs::path root = fs::canonical(source);
-  for (auto it = fs::recursive_directory_iterator(root, fs::directory_options::follow_directory_symlink);
-       it != fs::recursive_directory_iterator(); ++it) {
-    const fs::path relative = it->path().lexically_relative(root);
-    const fs::path target = dest / relative;
-    if (skip.count(relative.generic_string()) || relative == kOutputManifest) {
-      if (it->is_directory()) it.disable_recursion_pending();
-      continue;
-    }
-    if (it->is_directory()) {
-      if (IsImageDir(relative)) {
-        fs::create_directory_symlink(fs::canonical(it->path()), target);
+  for (const RecordingEntry& entry : RecordingEntries(source)) {
+    if (skip.count(entry.path)) continue;
+    const fs::path from = source / entry.path, to = dest / entry.path;
+    fs::create_directories(to.parent_path());
+    switch (entry.kind) {
+      case RecordingEntry::Kind::kDirectory:
+        fs::create_directories(to);
+        break;
+      case RecordingEntry::Kind::kImageFolder:
+        fs::create_directory_symlink(fs::canonical(from), to);
         ++stats.linked_image_dirs;
-        it.disable_recursion_pending();
-      } else {
-        fs::create_directories(target);
-      }
-    } else if (it->is_regular_file()) {
-      if (it->file_size() > kMaxCopiedFileBytes) {
-        fs::create_symlink(fs::canonical(it->path()), target);
-        ++stats.linked_files;
-      } else {
-        fs::copy_file(it->path(), target);
-        // A copy is the output's own file: writable by its owner whatever the source's mode.
-        fs::permissions(target, fs::perms::owner_write, fs::perm_options::add);
-        ++stats.copied_files;
-      }
+        break;
+      case RecordingEntry::Kind::kFile:
+        if (fs::file_size(from) > kMaxCopiedFileBytes) {
+          fs::create_symlink(fs::canonical(from), to);
+          ++stats.linked_files;
+        } else {
+          fs::copy_file(from, to);
+          // A copy is the output's own file: writable by its owner whatever the source's mode.
+          fs::permissions(to, fs::perms::owner_write, fs::perm_options::add);
+          ++stats.copied_files;
+        }
+        break;
     }
   }
+  stats.left_out = EntriesOutsideRecording(source);
   return stats;
 }
 

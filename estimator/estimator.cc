@@ -153,7 +153,9 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   if (!holding_still_) features_.Triangulate(CameraPoses());
   Failure failure;
   const auto start = std::chrono::steady_clock::now();
-  const bool solved = Optimize(keyframe && full, &failure.reason);
+  const bool solved = options_.solver.backend == SolverBackend::kDense
+                          ? OptimizeDense(keyframe && full, &failure.reason)
+                          : Optimize(keyframe && full, &failure.reason);
   timing_.optimize_s += SecondsSince(start);
   ++timing_.optimizations;
   if (solved) {

@@ -51,6 +51,9 @@ enum class FrameStatus {
 
 class Estimator {
  public:
+  // Benchmarks time the stages of one frame on a fixed window through it (bench/estimator_stages.h).
+  friend class EstimatorStages;
+
   Estimator(const EstimatorOptions& options, const CameraModel& camera, const ImuNoiseDensities& noise,
             double gravity_mps2, double imu_rate_hz, std::unique_ptr<Initializer> initializer);
   ~Estimator();
@@ -116,6 +119,17 @@ class Estimator {
   // Zero-velocity factors on the stationary intervals (zero_velocity_factor.h), when the update is on or a
   // static start is held.
   void AddZeroVelocityFactors(WindowProblem* w);
+  // The window's IMU factors and zero-velocity factors over `speed_bias` (frame k's block or a solve's copy
+  // of it), in the order a solve adds them; `costs` owns them.
+  void AppendImuTerms(const std::vector<double*>& speed_bias,
+                      std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                      std::vector<ImuTerm>* imu_terms);
+  void AppendZeroVelocityTerms(const std::vector<double*>& speed_bias,
+                               std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                               std::vector<MarginalizationTerm>* terms);
+  // The window's solve by the dense Levenberg-Marquardt of dense_window_solver.h (SolverOptions::backend:
+  // dense), with the factors of Optimize; false with a reason when it fails (estimator_optimize_dense.cc).
+  bool OptimizeDense(bool marginalize_oldest_next, std::string* reason);
   bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
   // Whether a new frame's interval must be tested for standing still: for the update, and for a static start
   // (the window before initialization, and while it is held still). The flags are read nowhere else.
@@ -127,7 +141,7 @@ class Estimator {
   void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
                                      std::vector<MarginalizationTerm>* terms);
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
-  ceres::Solver::Summary SolveAndGate(bool marginalize_oldest_next, WindowProblem* w);
+  ceres::Solver::Summary SolveAndGate(ceres::Solver::Options solver_options, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
   // A failure check that fired: its name (failure_checks()) and what it saw; `check` empty when none did.
   struct Failure {
@@ -139,6 +153,16 @@ class Estimator {
   Failure DetectFailure(const NavState& previous) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
+  // The factors that involve the oldest frame (window size >= 2), what its marginalization eliminates (its
+  // states and the depths of the usable tracks anchored in it) and those tracks' ids; `costs` owns the
+  // factors built for it.
+  struct OldestFrameTerms {
+    std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+    std::vector<MarginalizationTerm> terms;
+    DroppedBlocks dropped;
+    std::vector<int> tracks;
+  };
+  OldestFrameTerms TermsOfOldest();
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
   // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that

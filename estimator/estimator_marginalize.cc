@@ -44,33 +44,37 @@ void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres:
   costs->push_back(std::move(motion));
 }
 
+Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
+  OldestFrameTerms out;
+  Frame& oldest = *window_.front();
+  Frame& second = *window_[1];
+  out.dropped = {oldest.pose, oldest.speed_bias};
+  if (bias_prior_) out.terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
+  auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
+  out.terms.push_back(
+      {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
+  out.costs.push_back(std::move(factor));
+  AppendOldestZeroVelocityTerms(&out.costs, &out.terms);
+  std::vector<ReprojectionTerm> reprojections;
+  for (auto& [id, track] : features_.tracks()) {
+    if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
+    out.dropped.push_back(&track.inv_depth);
+    AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
+    out.tracks.push_back(id);
+  }
+  for (const ReprojectionTerm& term : reprojections)
+    out.terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
+  return out;
+}
+
 void Estimator::MarginalizeOldest(bool with_prior) {
   Frame& oldest = *window_.front();
   std::vector<int> restarted;  // tracks whose observations all went into the prior
   if (with_prior && window_.size() >= 2) {
-    std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-    std::vector<MarginalizationTerm> terms;
-    DroppedBlocks dropped = {oldest.pose, oldest.speed_bias};
-    if (bias_prior_) terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
-    Frame& second = *window_[1];
-    {
-      auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
-      terms.push_back(
-          {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
-      costs.push_back(std::move(factor));
-    }
-    AppendOldestZeroVelocityTerms(&costs, &terms);
-    std::vector<ReprojectionTerm> reprojections;
-    for (auto& [id, track] : features_.tracks()) {
-      if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
-      dropped.push_back(&track.inv_depth);
-      AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
-      if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted.push_back(id);
-    }
-    for (const ReprojectionTerm& term : reprojections)
-      terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
-    KeepPrior(terms, dropped);
-    if (options_.pose_covariance) KeepAnchoredPrior(terms, dropped);
+    const OldestFrameTerms oldest_terms = TermsOfOldest();
+    KeepPrior(oldest_terms.terms, oldest_terms.dropped);
+    if (options_.pose_covariance) KeepAnchoredPrior(oldest_terms.terms, oldest_terms.dropped);
+    if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted = oldest_terms.tracks;
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   for (const int id : restarted) features_.EraseTrack(id);

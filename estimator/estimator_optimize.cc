@@ -83,6 +83,7 @@ ceres::Solver::Options WindowSolverOptions(const SolverOptions& solver, bool mar
   options.linear_solver_type = ceres::DENSE_SCHUR;
   options.trust_region_strategy_type = ceres::DOGLEG;
   options.max_num_iterations = solver.max_iterations;
+
   options.function_tolerance = solver.function_tolerance;
   options.num_threads = 1;
   options.linear_solver_ordering = std::move(ordering);
@@ -134,7 +135,8 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   AddZeroVelocityFactors(&window);
   AddReprojectionFactors(elimination, &window);
   const NavState oldest_before = window_.front()->State();
-  const ceres::Solver::Summary summary = SolveAndGate(marginalize_oldest_next, &window);
+  const ceres::Solver::Summary summary =
+      SolveAndGate(WindowSolverOptions(options_.solver, marginalize_oldest_next, window.ordering), &window);
   window.eliminated.CopyBack();
   if (!summary.IsSolutionUsable()) {
     *reason = "solver failed: " + summary.message;
@@ -199,18 +201,20 @@ void Estimator::AddPriors(WindowProblem* w) {
   if (bias_prior_) w->problem.AddResidualBlock(bias_prior_.get(), nullptr, w->speed_bias.front());
 }
 
-void Estimator::AddImuFactors(WindowProblem* w) {
+void Estimator::AppendImuTerms(const std::vector<double*>& speed_bias,
+                               std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                               std::vector<ImuTerm>* imu_terms) {
   for (std::size_t k = 1; k < window_.size(); ++k) {
     auto factor = std::make_unique<ImuFactor>(*window_[k]->imu_from_prev, g_W_);
-    const ImuTerm& term = w->imu_terms.emplace_back(ImuTerm{
-        factor.get(), {window_[k - 1]->pose, w->speed_bias[k - 1], window_[k]->pose, w->speed_bias[k]}});
-    w->problem.AddResidualBlock(factor.get(), nullptr, term.blocks[0], term.blocks[1], term.blocks[2],
-                                term.blocks[3]);
-    w->costs.push_back(std::move(factor));
+    imu_terms->push_back(
+        ImuTerm{factor.get(), {window_[k - 1]->pose, speed_bias[k - 1], window_[k]->pose, speed_bias[k]}});
+    costs->push_back(std::move(factor));
   }
 }
 
-void Estimator::AddZeroVelocityFactors(WindowProblem* w) {
+void Estimator::AppendZeroVelocityTerms(const std::vector<double*>& speed_bias,
+                                        std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                                        std::vector<MarginalizationTerm>* terms) {
   if (!ZeroVelocityActive()) return;
   const ZeroVelocityOptions& o = options_.zero_velocity;
   std::vector<bool> still(window_.size(), false);
@@ -218,15 +222,31 @@ void Estimator::AddZeroVelocityFactors(WindowProblem* w) {
     if (!window_[k]->stationary) continue;
     still[k - 1] = still[k] = true;
     auto factor = std::make_unique<NoMotionFactor>(o.position_std_m, o.rotation_std_rad);
-    w->problem.AddResidualBlock(factor.get(), nullptr, window_[k - 1]->pose, window_[k]->pose);
-    w->costs.push_back(std::move(factor));
+    terms->push_back({factor.get(), nullptr, {window_[k - 1]->pose, window_[k]->pose}});
+    costs->push_back(std::move(factor));
   }
   for (std::size_t k = 0; k < window_.size(); ++k) {
     if (!still[k]) continue;
     auto factor = std::make_unique<ZeroVelocityFactor>(o.velocity_std_mps);
-    w->problem.AddResidualBlock(factor.get(), nullptr, w->speed_bias[k]);
-    w->costs.push_back(std::move(factor));
+    terms->push_back({factor.get(), nullptr, {speed_bias[k]}});
+    costs->push_back(std::move(factor));
   }
+}
+
+void Estimator::AddImuFactors(WindowProblem* w) {
+  const std::size_t first = w->costs.size();
+  AppendImuTerms(w->speed_bias, &w->costs, &w->imu_terms);
+  for (std::size_t i = 0; i < w->imu_terms.size(); ++i)
+    w->problem.AddResidualBlock(w->costs[first + i].get(), nullptr, w->imu_terms[i].blocks.data(), 4);
+}
+
+void Estimator::AddZeroVelocityFactors(WindowProblem* w) {
+  const std::size_t first = w->costs.size();
+  std::vector<MarginalizationTerm> terms;
+  AppendZeroVelocityTerms(w->speed_bias, &w->costs, &terms);
+  for (std::size_t i = 0; i < terms.size(); ++i)
+    w->problem.AddResidualBlock(w->costs[first + i].get(), nullptr, terms[i].blocks.data(),
+                                static_cast<int>(terms[i].blocks.size()));
 }
 
 void Estimator::AddReprojectionFactors(const Elimination& elimination, WindowProblem* w) {
@@ -242,9 +262,7 @@ void Estimator::AddReprojectionFactors(const Elimination& elimination, WindowPro
 
 // Solves; when IMU factors then fail their chi-square gate (in-estimator mitigation), they are inflated and
 // the problem is solved once more.
-ceres::Solver::Summary Estimator::SolveAndGate(bool marginalize_oldest_next, WindowProblem* w) {
-  ceres::Solver::Options solver_options =
-      WindowSolverOptions(options_.solver, marginalize_oldest_next, w->ordering);
+ceres::Solver::Summary Estimator::SolveAndGate(ceres::Solver::Options solver_options, WindowProblem* w) {
   StopAfterAcceptedSteps stop(options_.solver.accepted_steps, w->problem.NumResiduals());
   if (options_.solver.accepted_steps > 0) solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;

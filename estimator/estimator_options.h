@@ -40,8 +40,9 @@ struct GroundTruthInitOptions {
 // track, re-anchored in its next observation, and uses the observations the prior already holds once more:
 // the window claims more information than it has (the orientation NEES on the IMU simulated along V1_01
 // is 4.5). Restarting the track uses each observation once (NEES 1.8), but loses what ties a long track's
-// past to the window: ATE +74 % there, and one of five semi-real runs diverges (docs/estimator.md, "What the
-// marginalization prior holds"). So VINS-Mono's rule stays the default.
+// past to the window: ATE +74 % there, and one of five semi-real runs diverges
+// (docs/results/2026-12-estimator.md, "What the marginalization prior holds"). So VINS-Mono's rule stays the
+// default.
 enum class OldestTracks {
   kReanchor,  // VINS-Mono: marginalized into the prior, then kept, re-anchored in their next observation
   kRestart,   // marginalized into the prior, then erased: a later observation starts a new track
@@ -50,9 +51,9 @@ enum class OldestTracks {
 // Window length and keyframe policy. VINS-Mono keeps 10 keyframes and makes one at 10 px of parallax; at a
 // 20-30 Hz camera and a slow flight that makes every second frame a keyframe (EuRoC V1_01: 1,402 of 2,895
 // frames), so the window spans about a second and its yaw and scale drift with the IMU's errors. vigil keeps
-// 15 keyframes and makes one at 20 px, which spans about three times as long (docs/estimator.md, "Accuracy
-// ablations": ATE -45 to -50 % on the real IMU, -50 % on the IMU simulated along V1_01, -6 % on the paper
-// scenario, -28 % on the rescue course).
+// 15 keyframes and makes one at 20 px, which spans about three times as long
+// (docs/results/2026-12-estimator.md, "Accuracy ablations": ATE -45 to -50 % on the real IMU, -50 % on the
+// IMU simulated along V1_01, -6 % on the paper scenario, -28 % on the rescue course).
 struct WindowOptions {
   int size = 15;                  // keyframes kept besides the newest frame
   double min_parallax_px = 20.0;  // keyframe when the mean parallax to the previous frame reaches this
@@ -162,7 +163,12 @@ struct FeatureOptions {
   }
 };
 
+// The window's solver: Ceres (DENSE_SCHUR, DOGLEG: VINS-Mono's) or vigil's dense Levenberg-Marquardt over the
+// window with the depths eliminated (dense_window_solver.h), with the same factors and stopping rules.
+enum class SolverBackend { kCeres, kDense };
+
 struct SolverOptions {
+  SolverBackend backend = SolverBackend::kDense;
   int max_iterations = 8;  // trust-region iterations per solve (VINS-Mono's value)
   // A solve ends after this many accepted trust-region steps (0: only max_iterations, the function tolerance
   // and the time limit end it). The window is re-solved at every camera frame and a keyframe stays in it for
@@ -191,6 +197,11 @@ struct SolverOptions {
   template <class V>
   void Visit(V& v) {
     using config::Bounds;
+    v.Enum(
+        "backend", backend,
+        config::EnumNames<SolverBackend>{{"ceres", SolverBackend::kCeres}, {"dense", SolverBackend::kDense}},
+        "the window's solver: ceres (DENSE_SCHUR, DOGLEG) or dense (vigil's Levenberg-Marquardt over the "
+        "window with the depths eliminated)");
     v.Field("max_iterations", max_iterations, "Ceres iterations per solve (DENSE_SCHUR, DOGLEG)",
             Bounds::AtLeast(1));
     v.Field("accepted_steps", accepted_steps,

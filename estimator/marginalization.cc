@@ -13,28 +13,10 @@
 #include "core/so3.h"
 #include "estimator/normal_equations.h"
 #include "estimator/pose_manifold.h"
+#include "estimator/robust_loss.h"
 
 namespace vigil::estimator {
 namespace {
-
-// Applies a robust loss to a residual and its Jacobian like Ceres' Corrector (second-order aware).
-void Robustify(const ceres::LossFunction* loss, Eigen::VectorXd* r, RowMajorMatrix* J) {
-  if (loss == nullptr) return;
-  const double s = r->squaredNorm();
-  double rho[3];
-  loss->Evaluate(s, rho);
-  const double sqrt_rho1 = std::sqrt(rho[1]);
-  if (s == 0.0 || rho[2] <= 0.0) {
-    *r *= sqrt_rho1;
-    *J *= sqrt_rho1;
-    return;
-  }
-  const double D = 1.0 + 2.0 * s * rho[2] / rho[1];
-  const double alpha = 1.0 - std::sqrt(D);
-  const Eigen::VectorXd r0 = *r;
-  *J = sqrt_rho1 * (*J - alpha / s * r0 * (r0.transpose() * *J));
-  *r = sqrt_rho1 / (1.0 - alpha) * r0;
-}
 
 // The prior's tangent offset dx = x - x0 at the blocks' current values, and per pose block the inverse right
 // Jacobian of its rotation part, d dx_theta / d delta theta (identity for the other blocks).
@@ -194,22 +176,11 @@ Layout LayOut(const LinearPrior* previous, const std::vector<MarginalizationTerm
   return layout;
 }
 
-// Adds the previous prior at the blocks' current values: J_x = J D, r_x = r + J dx with D = diag(I, Jr_inv
-// per rotation), so J_x^T J_x = D^T H D and J_x^T r_x = D^T (g + H dx).
+// Adds the previous prior at the blocks' current values (PriorInformationAtCurrentValues).
 void AddPreviousPrior(const LinearPrior& previous, const Layout& layout, NormalEquations* eq) {
-  std::vector<const double*> values;
-  for (const LinearPrior::Block& b : previous.blocks) values.push_back(b.address);
-  const PriorOffset o = OffsetOf(previous, 0, values.data());
-  Eigen::MatrixXd H = previous.H;
-  Eigen::VectorXd g = previous.g + previous.H * o.dx;
-  for (std::size_t k = 0, c = 0; k < previous.blocks.size(); ++k) {
-    if (previous.blocks[k].size == kPoseSize) {
-      H.middleCols<3>(c + 3) = H.middleCols<3>(c + 3) * o.Jr_inv[k];
-      H.middleRows<3>(c + 3) = o.Jr_inv[k].transpose() * H.middleRows<3>(c + 3);
-      g.segment<3>(c + 3) = o.Jr_inv[k].transpose() * g.segment<3>(c + 3);
-    }
-    c += previous.blocks[k].tangent;
-  }
+  Eigen::MatrixXd H;
+  Eigen::VectorXd g;
+  PriorInformationAtCurrentValues(previous, &H, &g);
   // The prior's blocks are the layout's first columns, in the prior's order.
   std::vector<int> indices(previous.blocks.size());
   std::iota(indices.begin(), indices.end(), 0);
@@ -253,7 +224,7 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
       c += tangent;
     }
     if (!J.allFinite()) return false;
-    Robustify(term.loss, &r, &J);
+    Robustify(term.loss, r, J);
     // A reprojection (2 x 13: two poses and a depth, most of the terms) in fixed sizes, which the compiler
     // unrolls; other terms of a few rows as a sum of outer products of their rows (vectorized, without the
     // blocked matrix-product kernel and its set-up).
@@ -316,6 +287,22 @@ std::vector<LinearPrior::Block> KeptBlocks(const std::vector<Column>& columns) {
 }
 
 }  // namespace
+
+void PriorInformationAtCurrentValues(const LinearPrior& prior, Eigen::MatrixXd* H, Eigen::VectorXd* g) {
+  std::vector<const double*> values;
+  for (const LinearPrior::Block& b : prior.blocks) values.push_back(b.address);
+  const PriorOffset o = OffsetOf(prior, 0, values.data());
+  *H = prior.H;
+  *g = prior.g + prior.H * o.dx;
+  for (std::size_t k = 0, c = 0; k < prior.blocks.size(); ++k) {
+    if (prior.blocks[k].size == kPoseSize) {
+      H->middleCols<3>(c + 3) = H->middleCols<3>(c + 3) * o.Jr_inv[k];
+      H->middleRows<3>(c + 3) = o.Jr_inv[k].transpose() * H->middleRows<3>(c + 3);
+      g->segment<3>(c + 3) = o.Jr_inv[k].transpose() * g->segment<3>(c + 3);
+    }
+    c += prior.blocks[k].tangent;
+  }
+}
 
 bool LinearPrior::Involves(const double* address) const {
   for (const Block& b : blocks)

@@ -89,6 +89,11 @@ struct LinearPrior {
   bool Involves(const double* address) const;
 };
 
+// A prior's information at its blocks' current values, over its blocks in order (tangent space), as its
+// MarginalizationFactor evaluates it: J_x = J D and r_x = r + J dx with D = diag(I, Jr_inv per rotation),
+// so H_x = D^T H D and g_x = D^T (g + H dx).
+void PriorInformationAtCurrentValues(const LinearPrior& prior, Eigen::MatrixXd* H, Eigen::VectorXd* g);
+
 // The information the kept blocks have once the dropped ones are eliminated (the Schur complement, tangent
 // space, at the current values): H symmetric, g its gradient, over `blocks` with their values as x0. The
 // prior of Marginalize() is its square-root form; the estimator's pose covariance inverts it.

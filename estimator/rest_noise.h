@@ -21,7 +21,8 @@
 //             for the sensors in `bias_walk` the bias random walk is multiplied by r (the datasheet, which
 //             underestimates this sensor's fast errors r times, is taken to underestimate its slow ones as
 //             much). Gyroscope and accelerometer are judged separately.
-// The defaults (the accelerometer's white noise; no bias walk) follow the ablation in docs/estimator.md.
+// The defaults (the accelerometer's white noise; no bias walk) follow the ablation in
+// docs/results/2026-12-estimator.md.
 // `bias_walk: gyroscope` lowers the ATE of the whole semi-real V1_01 flight by a fifth but doubles the yaw
 // drift on the semi-real gate's 30 s excerpt, so it is a variant, not the default.
 // The rest is measured before the estimator starts, as a system calibrates on the ground before it moves: the

@@ -58,6 +58,11 @@ void CheckInput(const ImuStream& imu, const EstimatorInput& input) {
 }  // namespace
 
 EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInput& input) {
+  return RunEstimator(options, input, [](Estimator&) { return true; });
+}
+
+EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInput& input,
+                             const std::function<bool(Estimator&)>& after_tracked_frame) {
   const IntegratedImu deduplicated = DropRepeatedTimestamps(input);
   const bool repeated = deduplicated.repeated > 0;
   const ImuStream& imu = repeated ? deduplicated.imu : input.imu;
@@ -93,6 +98,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       if (options.pose_covariance)
         result.pose_covariances.push_back(estimator.newest_pose_covariance().value_or(
             Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN())));
+      if (!after_tracked_frame(estimator)) break;
     }
   } catch (const std::exception& e) {
     // Numerical trouble must not escape as a crash: the run fails with the reason.

@@ -1,9 +1,11 @@
 #include "evaluation/evaluate_trajectory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "core/config.h"
+#include "core/format.h"
 #include "core/so3.h"
 #include "evaluation/relative_error.h"
 
@@ -18,6 +20,34 @@ Eigen::Isometry3d Pose(const Eigen::Quaterniond& q, const Eigen::Vector3d& p) {
 }
 
 std::string AlignmentName(Alignment align) { return config::EnumNameOf(align, AlignmentNames()); }
+
+// The largest distance of a position from their centroid; horizontal (x, y of W) when only yaw is fitted.
+double ExtentOf(const std::vector<Eigen::Vector3d>& p, bool horizontal) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& x : p) centroid += x;
+  centroid /= static_cast<double>(p.size());
+  double extent = 0.0;
+  for (const Eigen::Vector3d& x : p) {
+    Eigen::Vector3d d = x - centroid;
+    if (horizontal) d.z() = 0.0;
+    extent = std::max(extent, d.norm());
+  }
+  return extent;
+}
+
+// Why the run's errors are no result (EvaluationOptions::min_coverage, min_alignment_extent_m), or "".
+std::string InconclusiveReason(const TrajectoryEvaluation& ev, const EvaluationOptions& options) {
+  if (ev.coverage < options.min_coverage)
+    return "coverage " + FormatFixed(100.0 * ev.coverage, 1) + " % (" + std::to_string(ev.matched_poses) +
+           " of " + std::to_string(ev.gt_poses) + " ground-truth poses) is below evaluation.min_coverage " +
+           FormatFixed(100.0 * options.min_coverage, 1) + " %";
+  if (!ev.alignment_defined)
+    return "the matched ground truth spans " + FormatFixed(ev.alignment_extent_m, 3) +
+           " m, below evaluation.min_alignment_extent_m " + FormatDouble(options.min_alignment_extent_m) +
+           " m: too little motion to define the " + AlignmentName(ev.align) +
+           " alignment, so its ATE is not computed (evaluation.align none needs no motion)";
+  return "";
+}
 
 }  // namespace
 
@@ -45,18 +75,24 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
     T_gt.push_back(Pose(gt[m.gt].q_WB, gt[m.gt].p_W));
   }
   ev.gt_length_m = DistanceFromStart(p_gt).back();
-  ev.alignment = AlignPositions(p_est, p_gt, options.align);
-
-  std::vector<double> e_trans, e_rot;
-  for (std::size_t k = 0; k < matches.size(); ++k) {
-    e_trans.push_back((p_gt[k] - ev.alignment.Apply(p_est[k])).norm());
-    const Eigen::Matrix3d R_err = ev.alignment.R * T_est[k].linear() * T_gt[k].linear().transpose();
-    e_rot.push_back(AngleOf(Eigen::Quaterniond(R_err)) * 180.0 / M_PI);
-  }
-  ev.ate_trans_m = ComputeStatistics(e_trans);
-  ev.ate_rot_deg = ComputeStatistics(e_rot);
+  ev.alignment_extent_m = ExtentOf(p_gt, options.align == Alignment::kPosYaw);
+  ev.alignment_defined =
+      options.align == Alignment::kNone || ev.alignment_extent_m >= options.min_alignment_extent_m;
+  ev.inconclusive_reason = InconclusiveReason(ev, options);
   ev.divergence_bound_m = options.divergence.length_fraction * ev.gt_length_m + options.divergence.margin_m;
-  ev.diverged = ev.ate_trans_m.rmse > ev.divergence_bound_m;
+
+  if (ev.alignment_defined) {
+    ev.alignment = AlignPositions(p_est, p_gt, options.align);
+    std::vector<double> e_trans, e_rot;
+    for (std::size_t k = 0; k < matches.size(); ++k) {
+      e_trans.push_back((p_gt[k] - ev.alignment.Apply(p_est[k])).norm());
+      const Eigen::Matrix3d R_err = ev.alignment.R * T_est[k].linear() * T_gt[k].linear().transpose();
+      e_rot.push_back(AngleOf(Eigen::Quaterniond(R_err)) * 180.0 / M_PI);
+    }
+    ev.ate_trans_m = ComputeStatistics(e_trans);
+    ev.ate_rot_deg = ComputeStatistics(e_rot);
+    ev.diverged = ev.inconclusive_reason.empty() && ev.ate_trans_m.rmse > ev.divergence_bound_m;
+  }
 
   for (RelativeErrorStatistics& rel : ev.relative) {
     const RelativeErrors r = ComputeRelativeErrors(T_est, T_gt, rel.distance_m, ev.alignment.scale);
@@ -74,7 +110,9 @@ nlohmann::json EvaluationJson(const TrajectoryEvaluation& ev) {
                  {"trans_m", StatisticsJson(ev.ate_trans_m)},
                  {"rot_deg", StatisticsJson(ev.ate_rot_deg)},
                  {"matched_poses", ev.matched_poses},
-                 {"scale", ev.alignment.scale}};
+                 {"scale", ev.alignment.scale},
+                 {"alignment_extent_m", ev.alignment_extent_m},
+                 {"alignment_defined", ev.alignment_defined}};
   json["relative"] = nlohmann::json::array();
   for (const RelativeErrorStatistics& rel : ev.relative)
     json["relative"].push_back({{"distance_m", rel.distance_m},
@@ -100,6 +138,7 @@ std::string EvaluationTable(const TrajectoryEvaluation& ev) {
       ev.matched_poses, ev.gt_poses, 100.0 * ev.coverage, ev.est_poses, ev.gt_length_m,
       AlignmentName(ev.align).c_str(), ev.alignment.scale);
   out += line;
+  if (!ev.inconclusive_reason.empty()) out += "inconclusive: " + ev.inconclusive_reason + "\n\n";
   const auto row = [&](const char* name, const ErrorStatistics& s) {
     std::snprintf(line, sizeof(line), "%-26s %10.4f %10.4f %10.4f %10.4f %10.4f %10.4f %7lld\n", name, s.rmse,
                   s.mean, s.median, s.std, s.min, s.max, static_cast<long long>(s.n));

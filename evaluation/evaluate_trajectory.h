@@ -36,8 +36,15 @@ struct TrajectoryEvaluation {
   // coverage = 1 and this one is shorter when the estimate starts late (initialization) or stops early.
   double gt_length_m = 0.0;
   ErrorStatistics ate_trans_m, ate_rot_deg;
+  // The motion the alignment rests on: the largest distance of a matched ground-truth position from their
+  // centroid (horizontal for posyaw). Below options.min_alignment_extent_m the alignment is not defined
+  // (alignment_defined false, never for `none`): the ATE statistics are then left empty (n = 0).
+  double alignment_extent_m = 0.0;
+  bool alignment_defined = true;
+  // Why the errors are no result (options.min_coverage, the alignment's extent); empty when they are.
+  std::string inconclusive_reason;
   // options.divergence applied: the largest ATE RMSE that is not divergence, and whether the run exceeds it
-  // (false when nothing matched: such a run is failed, not diverged).
+  // (false when nothing matched, or the run is inconclusive: such a run is failed or inconclusive).
   double divergence_bound_m = 0.0;
   bool diverged = false;
   std::vector<RelativeErrorStatistics> relative;  // one per options.distances_m, in that order
@@ -50,7 +57,8 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
                                         const EvaluationOptions& options,
                                         int64_t max_difference_ns = kDefaultMaxAssociationDifferenceNs);
 
-// {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale"}, "relative":
+// {"ate": {"align", "trans_m": STATS, "rot_deg": STATS, "matched_poses", "scale", "alignment_extent_m",
+// "alignment_defined"}, "relative":
 // [{"distance_m", "trans_m", "trans_perc", "yaw_deg", "rot_deg"}...], "coverage": fraction, "gt_length_m":
 // .., "divergence": {"bound_m", "diverged"}, "nees": {"position": STATS, "orientation": STATS}} with STATS =
 // {"rmse", "mean", "median", "std", "min", "max", "n"} (n of a relative entry: its segment count); the

@@ -12,6 +12,7 @@
 #include "core/format.h"
 #include "core/imu_input.h"
 #include "core/output.h"
+#include "core/recording_files.h"
 #include "detectors/detector.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/template_library.h"
@@ -108,7 +109,7 @@ void WriteCleanOutput(const CleanRequest& request, const CleanInputs& in,
   // The dataset directory first (the clearest message), then every file read.
   std::vector<fs::path> inputs;
   std::error_code ec;
-  if (fs::is_directory(request.dataset, ec)) inputs.emplace_back(request.dataset);
+  if (fs::is_directory(request.dataset, ec)) inputs = RecordingInputPaths(request.dataset);
   for (const fs::path& file :
        {in.input.imu, in.clean_path, in.glitches_path, fs::path(options.dtw.templates_file)})
     inputs.push_back(file);

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/euroc.h"
 #include "core/output.h"
+#include "core/recording_files.h"
 #include "evaluation/metrics_access.h"
 #include "experiments/external_recording.h"
 #include "experiments/frontend_run.h"
@@ -77,7 +78,7 @@ nlohmann::json EstimateToDirectory(const fs::path& dataset, const std::string& c
   const Clock::time_point start = Clock::now();
   RunConfig config = LoadRunConfig(config_path, overrides);
   config.estimator.backend = EstimatorBackend::kBuiltin;
-  std::vector<fs::path> inputs{dataset};
+  std::vector<fs::path> inputs = RecordingInputPaths(dataset);
   if (!config_path.empty()) inputs.emplace_back(config_path);
   RefuseOutputOverInputs(dir, inputs);
 

@@ -108,6 +108,9 @@ std::string ValidateExternalOptions(const ExternalEstimatorOptions& options) {
     return "trajectory: expected a file name relative to the command's {output} folder";
   for (const fs::path& part : trajectory)
     if (part == "..") return "trajectory: '" + options.trajectory + "' leaves the {output} folder";
+  // A file name, not a folder: "traj.txt/" and "." name no file the estimator could write.
+  if (!trajectory.has_filename() || trajectory.filename() == ".")
+    return "trajectory: '" + options.trajectory + "' names a folder, not a file (expected e.g. traj.txt)";
   return {};
 }
 

@@ -6,10 +6,13 @@
 #include <chrono>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
+#include "core/staging.h"
 #include "experiments/child_process.h"
 #include "experiments/external_command.h"
 #include "experiments/external_recording.h"
@@ -67,6 +70,20 @@ const char* OutcomeName(ChildProcessResult::Outcome outcome) {
   return "?";
 }
 
+// The command line as it reads once the run is committed: the run directory's staging name
+// ("<id>.tmp-<host>-<pid>", core/staging.h) replaced by its final one, where the files then are.
+std::vector<std::string> CommittedCommand(std::vector<std::string> argv, const fs::path& run_dir) {
+  const fs::path staged = fs::absolute(run_dir).lexically_normal();
+  const std::optional<StagingName> staging = ParseStagingName(staged.filename().string());
+  if (!staging) return argv;
+  const std::string from = staged.string();
+  const std::string to = (staged.parent_path() / staging->final_name).string();
+  for (std::string& arg : argv)
+    for (std::size_t at = arg.find(from); at != std::string::npos; at = arg.find(from, at + to.size()))
+      arg.replace(at, from.size(), to);
+  return argv;
+}
+
 }  // namespace
 
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
@@ -84,6 +101,9 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
     result.frames = 0;
   };
   json["wall_time_s"] = {{"write_recording", 0.0}, {"process", 0.0}, {"read", 0.0}};
+  // From here to the return, an interrupt is handed on to the program and then thrown (Interrupted), so
+  // that the temporary recording is removed on the way out.
+  const InterruptScope interrupts;
 
   // 1. The recording, the output folder and the command line.
   const fs::path external_dir = run_dir / "external";
@@ -107,19 +127,11 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
                                    CurrentExecutablePath()};
   ChildProcessOptions child;
   for (const std::string& arg : options.command) child.argv.push_back(ExpandPlaceholders(arg, values));
-  // metrics.json names the command as configured and where its placeholders pointed, as paths that hold
-  // after the run: inside the run directory relative to it; the temporary recording, removed, as null.
-  const auto kept = [&](const fs::path& path) -> nlohmann::json {
-    if (!options.keep_recording) return nullptr;
-    return fs::absolute(path).lexically_relative(fs::absolute(run_dir)).generic_string();
-  };
-  json["command"] = options.command;
-  json["placeholders"] = {{"recording", kept(recording->path())},
-                          {"mav0", kept(recording->path() / euroc_files::kMav0)},
-                          {"config", kept(recording->path() / dataset_files::kConfig)},
-                          {"output", "external/output"},
-                          {"seed", values.seed},
-                          {"vigil", values.vigil}};
+  json["command"] = CommittedCommand(child.argv, run_dir);
+  json["recording"] = options.keep_recording
+                          ? "external/recording"
+                          : "removed after the run (estimator.external.keep_recording: true keeps it in "
+                            "external/recording)";
   std::string why;
   child.program = ResolveExecutable(child.argv.front(), &why);
   if (child.program.empty()) {
@@ -146,8 +158,14 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   t = Clock::now();
   const int64_t t_first = imu.empty() ? 0 : imu.front().t_ns;
   const int64_t t_last = imu.empty() ? 0 : imu.back().t_ns;
-  ExternalTrajectory read = ReadExternalTrajectory(output_dir / options.trajectory, options.format,
-                                                   options.time_unit, t_first, t_last);
+  const fs::path trajectory = output_dir / options.trajectory;
+  const std::string outside = TrajectoryOutsideOutput(trajectory, output_dir);
+  if (!outside.empty()) {
+    fail(outside);
+    return out;
+  }
+  ExternalTrajectory read =
+      ReadExternalTrajectory(trajectory, options.format, options.time_unit, t_first, t_last);
   json["wall_time_s"]["read"] = ExternalSecondsSince(t);
   json["rows"] = read.trajectory.size();
   if (!read.failure.empty()) {

@@ -10,6 +10,7 @@
 #include "core/dataset.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/pose_checks.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -17,6 +18,9 @@ namespace {
 
 // Largest |time| accepted in seconds (far beyond any recording, short of int64 nanoseconds' range).
 constexpr double kMaxAbsTime_s = 9e9;
+// Closest two poses may be: no estimator runs at a megahertz, so rows closer than this were read in the
+// wrong unit.
+constexpr int64_t kMinExternalPoseStep_ns = 1000;
 
 std::vector<std::string_view> SplitFields(std::string_view line, TrajectoryFormat format) {
   std::vector<std::string_view> fields;
@@ -88,6 +92,21 @@ bool ParseNanoseconds(std::string_view text, int64_t* t_ns) {
 
 }  // namespace
 
+std::string TrajectoryOutsideOutput(const fs::path& path, const fs::path& output_dir) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec))) return {};
+  const std::string name = path.filename().string();
+  const fs::path root = fs::canonical(output_dir, ec);
+  if (ec) return name + ": the {output} folder cannot be resolved: " + ec.message();
+  const fs::path real = fs::canonical(path, ec);
+  if (ec) return name + ": cannot be resolved (" + ec.message() + "); not read";
+  const fs::path inside = real.lexically_relative(root);
+  if (!inside.empty() && *inside.begin() != "..") return {};
+  return name + ": resolves to " + real.string() +
+         ", outside the estimator's {output} folder: not read (the trajectory must be a file the estimator "
+         "wrote there, not a link out of it)";
+}
+
 ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat format, TimeUnit unit,
                                           int64_t t_first_ns, int64_t t_last_ns) {
   ExternalTrajectory out;
@@ -115,7 +134,7 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
   const std::string layout =
       format == TrajectoryFormat::kTum ? "TUM 't x y z qx qy qz qw'" : "EuRoC 't,x,y,z,qw,qx,qy,qz'";
   int line_number = 0;
-  double previous_t = 0.0;  // the previous row's time as written, when nanoseconds
+  double previous_written = -std::numeric_limits<double>::infinity();
   for (std::size_t begin = 0; begin < text.size();) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string::npos) end = text.size();
@@ -148,26 +167,32 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
     pose.p_W = Eigen::Vector3d(v[0], v[1], v[2]);
     pose.q_WB = format == TrajectoryFormat::kTum ? Eigen::Quaterniond(v[6], v[3], v[4], v[5])
                                                  : Eigen::Quaterniond(v[3], v[4], v[5], v[6]);
-    const double norm2 = pose.q_WB.squaredNorm();
-    if (!(norm2 > 1e-6)) return fail(line_number, "the quaternion is zero");
-    if (std::abs(norm2 - 1.0) > 8 * std::numeric_limits<double>::epsilon()) pose.q_WB.normalize();
-    if (!out.trajectory.empty() && pose.t_ns <= out.trajectory.back().t_ns) {
-      // Seconds read as nanoseconds: 0.033 and 0.067 both round to 0 ns, inside a recording that starts at 0.
-      double t = 0.0;
-      if (unit == TimeUnit::kNanoseconds && ParseDouble(f[0], &t) && t > previous_t)
-        return fail(line_number,
-                    "timestamps " + FormatDouble(previous_t) + " and " + std::string(f[0]) +
-                        " ns are the same nanosecond: a unit mix-up? (estimator.external.time_unit)");
+    if (const std::string problem = QuaternionNormProblem(pose.q_WB); !problem.empty())
+      return fail(line_number, problem);
+    if (std::abs(pose.q_WB.squaredNorm() - 1.0) > 8 * std::numeric_limits<double>::epsilon())
+      pose.q_WB.normalize();
+    // Times that increase as written but not once read in the unit (seconds read as nanoseconds collapse
+    // onto a few ns) are a unit mix-up, whatever the recording's start.
+    double written = 0.0;
+    ParseDouble(f[0], &written);
+    const std::string unit_hint = std::string(": a unit mix-up? (estimator.external.time_unit ") +
+                                  (unit == TimeUnit::kSeconds ? "s" : "ns") + " reads them as " +
+                                  (unit == TimeUnit::kSeconds ? "seconds" : "nanoseconds") + ")";
+    if (!out.trajectory.empty() && pose.t_ns < out.trajectory.back().t_ns + kMinExternalPoseStep_ns) {
+      if (written > previous_written && pose.t_ns >= out.trajectory.back().t_ns)
+        return fail(line_number, "timestamp " + std::string(f[0]) + " lies " +
+                                     std::to_string(pose.t_ns - out.trajectory.back().t_ns) +
+                                     " ns after the previous row's, less than 1 us" + unit_hint);
       return fail(line_number, "timestamps are not strictly increasing (" + std::string(f[0]) + " after " +
                                    std::to_string(out.trajectory.back().t_ns) + " ns)");
     }
+    previous_written = written;
     if (pose.t_ns < t_first_ns - kExternalTimeSlack_ns || pose.t_ns > t_last_ns + kExternalTimeSlack_ns)
       return fail(line_number, "timestamp " + std::string(f[0]) +
                                    (unit == TimeUnit::kSeconds ? " s" : " ns") +
                                    " lies outside the recording (" + FormatFixed(NsToS(t_first_ns), 3) +
                                    " .. " + FormatFixed(NsToS(t_last_ns), 3) +
                                    " s): a unit mix-up? (estimator.external.time_unit)");
-    if (unit == TimeUnit::kNanoseconds) ParseDouble(f[0], &previous_t);
     out.trajectory.push_back(pose);
   }
   if (out.trajectory.empty()) return fail(0, "the trajectory is empty (no rows)");

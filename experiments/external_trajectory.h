@@ -27,10 +27,18 @@ struct ExternalTrajectory {
   std::string failure;  // empty when the file was read; else why the run failed ("trajectory.txt:12: ...")
 };
 
-// Reads `path`: rows must be finite, quaternions non-zero (normalized unless unit to double precision),
+// Reads `path`: rows must be finite, quaternions unit (core/pose_checks.h; normalized unless unit to double
+// precision),
 // times strictly increasing and inside [t_first_ns - slack, t_last_ns + slack] (a row outside is mostly a
 // unit mix-up: nanoseconds read as seconds). An absent or empty file is a failure too.
 ExternalTrajectory ReadExternalTrajectory(const std::filesystem::path& path, TrajectoryFormat format,
                                           TimeUnit unit, int64_t t_first_ns, int64_t t_last_ns);
+
+// Empty when `path`, with every symbolic link on it resolved, lies inside `output_dir` (or does not exist:
+// the reader says so); else why it is not read ("traj.txt: resolves to /etc/passwd, outside ..."). An
+// estimator's trajectory is what it wrote into its {output} folder, never a file elsewhere that a link
+// names.
+std::string TrajectoryOutsideOutput(const std::filesystem::path& path,
+                                    const std::filesystem::path& output_dir);
 
 }  // namespace vigil::experiments

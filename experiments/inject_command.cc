@@ -13,6 +13,7 @@
 #include "core/euroc.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/recording_files.h"
 #include "sim/recording_faults.h"
 
 namespace vigil::experiments {
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 sim::RecordingFaultOptions ResolveInjectOptions(const InjectRequest& request) {
   sim::RecordingFaultOptions options;
   config::ApplyOverrides(request.overrides, options);
-  if (!request.seed.empty()) config::ApplyOverride("seed=" + request.seed, options);
+  if (!request.seed.empty()) options.seed = config::ParseSeedArgument(request.seed);
   const std::string why = sim::ValidateRecordingFaultOptions(options);
   if (!why.empty()) throw InputError("--set " + why);
   return options;
@@ -48,14 +49,16 @@ Recording ReadInjectSource(const std::string& dataset) {
 }
 
 // Where a recording keeps its IMU, relative to its folder: imu.csv (vigil's layout, which may also hold a
-// mav0/imu0 copy written by vigil simulate --images) or mav0/imu0/data.csv (EuRoC).
+// mav0/imu0 copy written by vigil simulate --images) or mav0/imu0/data.csv (EuRoC; imu0/data.csv when the
+// folder holds imu0/ itself).
 std::vector<std::string> ImuFilesOf(const fs::path& dir, const Recording& recording) {
-  const std::string euroc =
-      std::string(euroc_files::kMav0) + "/" + euroc_files::kImu + "/" + euroc_files::kData;
+  const fs::path mav0 = FindMav0(dir);
+  const std::string imu = std::string(euroc_files::kImu) + "/" + euroc_files::kData,
+                    euroc = mav0 == dir ? imu : std::string(euroc_files::kMav0) + "/" + imu;
   std::error_code ec;
   if (recording.layout == "euroc") return {euroc};
   std::vector<std::string> files = {dataset_files::kImu};
-  if (fs::is_regular_file(dir / euroc, ec)) files.push_back(euroc);
+  if (!mav0.empty() && fs::is_regular_file(dir / euroc, ec)) files.push_back(euroc);
   return files;
 }
 
@@ -88,7 +91,7 @@ InjectResult InjectRecording(const InjectRequest& request) {
   const Dataset& d = recording.dataset;
   const sim::FaultedRecording faulted = sim::InjectIntoRecording(options, d.imu, d.imu_clean, d.glitches);
 
-  RefuseOutputOverInputs(request.output, {dir});
+  RefuseOutputOverInputs(request.output, RecordingInputPaths(dir));
   StagedDirectory out(request.output, request.force);
   const std::vector<std::string> imu_files = ImuFilesOf(dir, recording);
   std::set<std::string> skip(imu_files.begin(), imu_files.end());
@@ -108,11 +111,17 @@ InjectResult InjectRecording(const InjectRequest& request) {
 }
 
 std::string InjectSummary(const InjectRequest& request, const InjectResult& result) {
-  return FormatPrintf(
-      "%zu IMU samples -> %zu, fault records: %s; %d files copied, %d linked, %d image folders linked -> %s",
+  std::string summary = FormatPrintf(
+      "%zu IMU samples -> %zu, fault records: %s; %d files copied, %d linked, %d image folders linked",
       result.imu_samples_in, result.imu_samples_out, KindCounts(result.glitches).c_str(),
-      result.copied.copied_files, result.copied.linked_files, result.copied.linked_image_dirs,
-      request.output.c_str());
+      result.copied.copied_files, result.copied.linked_files, result.copied.linked_image_dirs);
+  const std::vector<std::string>& left_out = result.copied.left_out;
+  if (!left_out.empty()) {
+    summary += FormatPrintf("; %zu entries that are not part of a recording left out (", left_out.size());
+    for (std::size_t i = 0; i < left_out.size() && i < 3; ++i) summary += (i ? ", " : "") + left_out[i];
+    summary += left_out.size() > 3 ? ", ...)" : ")";
+  }
+  return summary + " -> " + request.output;
 }
 
 }  // namespace vigil::experiments

@@ -76,7 +76,7 @@ std::string ResultsCsvWriter::TimingRow(const SweepRunRef& run, const nlohmann::
   std::string r = run.id;
   for (const char* stage : {"simulate", "templates", "detect", "estimate", "evaluate", "total"})
     r += "," + Number(evaluation::MetricNumber(m, {"wall_time_s", stage}));
-  r += "," + Number(evaluation::MetricNumber(m, {"external", "wall_time_s", "process"}));  // empty: builtin
+  r += "," + Number(evaluation::MetricNumber(m, {"external", "wall_time_s", "process"}));  // empty: built-in
   return r;
 }
 

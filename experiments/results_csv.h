@@ -3,14 +3,14 @@
 //
 // results.csv columns: id, one column per axis (its setting's label), method, seed, status, failure_reason,
 // the ATE statistics, the relative errors per distance (mean translation [m], mean yaw [deg] and the number
-// of sub-trajectories), detection statistics, estimator resets, NEES and coverage (the part of the ground
-// truth the estimate covers, 0..1; new columns are appended, so readers by position keep working). Values
-// come from the run's metrics.json only and none depends on timing, so the file is the same byte for byte
-// whether runs were executed now or read back (--resume), with any -j, in shards, on any machine; a value a
-// run does not have (a failed run's errors) is left empty. timing.csv:
-// `#id,simulate_s,templates_s,detect_s,estimate_s,evaluate_s,total_s,external_process_s`, the wall times of
-// each run's stages (metrics.json "wall_time_s") and of an external estimator's process (its "external"
-// object; empty for vigil's own estimator), which differ from one execution to the next.
+// of sub-trajectories), detection statistics, estimator resets, NEES means and (appended later, so that
+// readers by position keep working) the coverage. Values come from the run's metrics.json
+// only and none depends on timing, so the file is the same byte for byte whether runs were executed now or
+// read back (--resume), with any -j, in shards, on any machine; a value a run does not have (a failed run's
+// errors) is left empty.
+// timing.csv: `#id,simulate_s,templates_s,detect_s,estimate_s,evaluate_s,total_s,external_process_s`, the
+// wall times of each run's stages (metrics.json "wall_time_s"; the last, the external estimator's process,
+// "external.wall_time_s.process", empty for vigil's own), which differ from one execution to the next.
 #pragma once
 
 #include <filesystem>

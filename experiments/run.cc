@@ -186,12 +186,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   if (!data.with_groundtruth) SkipEvaluation(result, &metrics);
   if (external) {
     metrics["external"] = external->json;
-    // What vigil knows of another estimator (no initializer, keyframes or timing of its own to report).
-    metrics["estimator"] = {
-        {"backend", "external"},
-        {"initialized_at_s",
-         result.trajectory.empty() ? nlohmann::json() : nlohmann::json(result.initialized_at_s)},
-        {"output_poses", result.trajectory.size()}};
+    DescribeExternalEstimator(&metrics);
   }
   if (data.frontend) {
     metrics["frontend"] = data.frontend->metrics;

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <system_error>
+#include <utility>
 
 #include "core/error.h"
+#include "core/recording_files.h"
 #include "detectors/detector.h"
 #include "experiments/external_command.h"
 #include "sim/imu_presets.h"
@@ -41,18 +44,9 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   try {
     ValidateRunConfig(config, origin);
   } catch (const InputError& e) {
-    // Name where the value at fault came from: the last --set of a key the error is about, else the line of
-    // such a key in the file.
     std::string rest;
-    const std::vector<std::string> keys = KeysOfConfigError(e.what(), origin, &rest);
-    for (const std::string& key : keys)
-      for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
-        if (o->compare(0, key.size() + 1, key + "=") == 0) throw InputError("--set " + *o + ": " + rest);
-    if (path.empty() || keys.empty()) throw;
-    const YAML::Node root = config::LoadYamlFile(path);
-    for (const std::string& key : keys)
-      if (const int line = config::KeyLine(root, key); line > 0) throw InputError(Located(path, line, rest));
-    throw;
+    if (KeysOfConfigError(e.what(), origin, &rest).empty()) throw;
+    throw LocatedConfigError(path, overrides, rest);
   }
   return config;
 }
@@ -100,13 +94,53 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
   return keys;
 }
 
+InputError LocatedConfigError(const std::string& path, const std::vector<std::string>& overrides,
+                              const std::string& problem) {
+  // Name where the value at fault came from: the last --set of a key the problem is about, else the line of
+  // such a key in the file.
+  const std::string origin = path.empty() ? "--set" : path;
+  std::string rest;
+  const std::vector<std::string> keys = KeysOfConfigError(origin + ": " + problem, origin, &rest);
+  for (const std::string& key : keys)
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (o->compare(0, key.size() + 1, key + "=") == 0) return InputError("--set " + *o + ": " + rest);
+  if (!path.empty()) {
+    const YAML::Node root = config::LoadYamlFile(path);
+    for (const std::string& key : keys)
+      if (const int line = config::KeyLine(root, key); line > 0) return InputError(Located(path, line, rest));
+  }
+  return InputError(origin + ": " + problem);
+}
+
+namespace {
+
+// Each input file of a run and the key that names it.
+std::vector<std::pair<const char*, const std::string*>> NamedInputs(const RunConfig& config) {
+  return {{"trajectory.waypoints_file", &config.sim.trajectory.waypoints_file},
+          {"trajectory.recording", &config.sim.trajectory.recording},
+          {"detector.dtw.templates_file", &config.detector.dtw.templates_file},
+          {"imu.recording", &config.sim.imu.recording},
+          {"detector.calibration_dataset", &config.detector.calibration_dataset}};
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config) {
   std::vector<std::filesystem::path> inputs;
-  for (const std::string& file :
-       {config.sim.trajectory.waypoints_file, config.sim.trajectory.recording,
-        config.detector.dtw.templates_file, config.sim.imu.recording, config.detector.calibration_dataset})
-    if (!file.empty()) inputs.emplace_back(file);
+  // A recording stands for every entry of it (a linked image folder makes its target an input).
+  for (const auto& [key, file] : NamedInputs(config))
+    if (!file->empty())
+      for (const std::filesystem::path& input : RecordingInputPaths(*file)) inputs.push_back(input);
   return inputs;
+}
+
+std::string MissingInputProblem(const RunConfig& config) {
+  for (const auto& [key, file] : NamedInputs(config)) {
+    std::error_code ec;
+    if (!file->empty() && !std::filesystem::exists(*file, ec))
+      return std::string(key) + ": " + *file + ": no such file or directory";
+  }
+  return "";
 }
 
 }  // namespace vigil::experiments

@@ -69,9 +69,19 @@ void ValidateRunConfig(const RunConfig& config, const std::string& origin);
 std::vector<std::string> KeysOfConfigError(const std::string& message, const std::string& origin,
                                            std::string* rest);
 
+// A problem "key: reason" with the configuration loaded from `path` (empty: none) and `overrides`, located
+// where the value at fault came from: "--set key=value: reason" for the last --set of a key it is about,
+// else "path:line: key: reason" for such a key's line in the file, else "path: key: reason" ("--set: ..."
+// without a file).
+InputError LocatedConfigError(const std::string& path, const std::vector<std::string>& overrides,
+                              const std::string& problem);
+
 // The files a run with `config` reads besides its config file (waypoints, DTW templates, calibration
-// dataset): what its output
-// must not overwrite (core/output.h RefuseOutputOverInputs).
+// dataset): what its output must not overwrite (core/output.h RefuseOutputOverInputs).
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config);
+
+// "key: PATH: no such file or directory" for the first input of RunConfigInputs that does not exist, with
+// the key that names it; "" when every one exists.
+std::string MissingInputProblem(const RunConfig& config);
 
 }  // namespace vigil::experiments

@@ -25,6 +25,9 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   if (!result.ok) {
     m["status"] = "failed";
     m["failure_reason"] = result.failure_reason;
+  } else if (!evaluation.inconclusive_reason.empty()) {
+    m["status"] = kInconclusive;
+    m["failure_reason"] = evaluation.inconclusive_reason;
   } else if (!evaluated) {
     m["status"] = "failed";
     m["failure_reason"] = "evaluation: the ATE is not finite (" + std::to_string(evaluation.matched_poses) +
@@ -44,7 +47,8 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   m["wall_time_s"] = {{"simulate", w.simulate_s}, {"templates", w.templates_s}, {"detect", w.detect_s},
                       {"estimate", w.estimate_s}, {"evaluate", w.evaluate_s},   {"total", w.total_s}};
   const estimator::EstimatorTiming& t = result.timing;
-  m["estimator"] = {{"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
+  m["estimator"] = {{"backend", "builtin"},
+                    {"init", summary.init == estimator::InitMode::kVins ? "vins" : "groundtruth"},
                     {"initialized_at_s", evaluation::NumberOrNull(result.initialized_at_s)},
                     {"resets", result.resets},
                     {"stops", result.stops},
@@ -89,6 +93,15 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
   return m;
 }
 
+void DescribeExternalEstimator(nlohmann::json* metrics) {
+  nlohmann::json& e = (*metrics)["estimator"];
+  e["backend"] = "external";
+  e["init"] = "external";
+  for (const char* key : {"resets", "stops", "failure_checks", "keyframes", "marginalization_failures",
+                          "timing", "mitigation", "imu_noise_at_rest"})
+    e[key] = nullptr;
+}
+
 void SkipEvaluation(const estimator::EstimatorResult& result, nlohmann::json* metrics) {
   nlohmann::json& m = *metrics;
   m["status"] = result.ok ? "ok" : "failed";
@@ -107,10 +120,17 @@ std::string RunSummaryLine(const nlohmann::json& m) {
     return s + buf;
   }
   const nlohmann::json& ate = m.at("ate");
-  std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
-                evaluation::MetricNumber(ate, {"trans_m", "rmse"}),
-                ate.at("align").get<std::string>().c_str(),
-                100.0 * evaluation::MetricNumber(m, {"coverage"}));
+  // An alignment without the motion to define it has no ATE (evaluation_options.h); older files lack the key.
+  if (ate.value("alignment_defined", true))
+    std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
+                  evaluation::MetricNumber(ate, {"trans_m", "rmse"}),
+                  ate.at("align").get<std::string>().c_str(),
+                  100.0 * evaluation::MetricNumber(m, {"coverage"}));
+  else
+    std::snprintf(buf, sizeof(buf), ": no ATE (%s alignment undefined over %.3f m, coverage %.1f %%)",
+                  ate.at("align").get<std::string>().c_str(),
+                  evaluation::MetricNumber(ate, {"alignment_extent_m"}),
+                  100.0 * evaluation::MetricNumber(m, {"coverage"}));
   s += buf;
   if (!m.at("relative").empty()) {
     const nlohmann::json& r = m.at("relative").front();
@@ -126,7 +146,8 @@ std::string RunSummaryLine(const nlohmann::json& m) {
     s += buf;
   }
   // A dropped marginalization prior (the window then holds only its own information) is said.
-  const int failures = m.contains("estimator") ? m["estimator"].value("marginalization_failures", 0) : 0;
+  const double failures_value = evaluation::MetricNumber(m, {"estimator", "marginalization_failures"});
+  const int failures = std::isfinite(failures_value) ? static_cast<int>(failures_value) : 0;
   if (failures > 0)
     s += ", " + std::to_string(failures) + " failed marginalization" + (failures > 1 ? "s" : "") +
          " (prior dropped)";

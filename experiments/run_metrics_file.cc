@@ -69,8 +69,9 @@ json ReadRunMetricsText(const TextFile& file, uint64_t seed) {
   if (!m.is_object()) doc.Fail("", std::string("expected a JSON object, got ") + m.type_name());
   const MetricsCheck check(doc);
   const json* status = check.Find("/status");
-  if (!status || !status->is_string() || (*status != "ok" && *status != "diverged" && *status != "failed"))
-    doc.Fail("/status", "expected \"ok\", \"diverged\" or \"failed\"");
+  if (!status || !status->is_string() ||
+      (*status != "ok" && *status != "diverged" && *status != "failed" && *status != "inconclusive"))
+    doc.Fail("/status", "expected \"ok\", \"diverged\", \"inconclusive\" or \"failed\"");
   if (const json* r = check.Find("/failure_reason"); r && !r->is_string())
     doc.Fail("/failure_reason", std::string("expected a string, got ") + r->type_name());
   // Every run vigil writes records its seed (one that failed before it started has none): when there, it must

@@ -1,7 +1,7 @@
 // Reading a sweep run's metrics.json back (`vigil tables`, `vigil regress`, the end of `vigil sweep`): the
 // file is input like any other, so it is checked before a table counts it (formats.md gives its keys; keys
 // may be added, and unknown ones are ignored). Refused, with "FILE:LINE: key: reason":
-//   - anything but a JSON object, a "status" other than "ok", "diverged" or "failed";
+//   - anything but a JSON object, a "status" other than "ok", "diverged", "inconclusive" or "failed";
 //   - a "seed" that is not the run's (the metrics of another run copied in; a run that failed before it
 //     started has none);
 //   - where present: ate/relative statistics that are not numbers (null allowed) in [0, kMaxMetricValue],

@@ -4,9 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "core/output.h"
 #include "evaluation/metrics_access.h"
+#include "experiments/run_metrics.h"
 #include "experiments/run_metrics_file.h"
 #include "experiments/sweep_engine.h"
 
@@ -19,6 +24,21 @@ double Ratio(double num, double den) { return den > 0 ? num / den : kNaN; }
 // A run directory belongs to this plan only if the configuration it ran (its config.yaml, when it has one)
 // is the plan's for its cell and seed: a sweep.yaml swapped for another sweep's is refused here, instead of
 // tabulating runs under settings they did not run with. `planned` caches the cell's configuration.
+// The dotted paths of a mapping's leaves ("evaluation.min_coverage").
+std::vector<std::string> LeafKeys(const YAML::Node& node, const std::string& prefix = "") {
+  std::vector<std::string> keys;
+  for (const auto& entry : node) {
+    const std::string key = prefix + entry.first.as<std::string>();
+    if (entry.second.IsMap()) {
+      const std::vector<std::string> inner = LeafKeys(entry.second, key + ".");
+      keys.insert(keys.end(), inner.begin(), inner.end());
+    } else {
+      keys.push_back(key);
+    }
+  }
+  return keys;
+}
+
 void CheckRunConfig(const fs::path& run_dir, const SweepSpec& spec, const SweepCell& cell, uint64_t seed,
                     std::optional<RunConfig>* planned) {
   const fs::path path = run_dir / "config.yaml";
@@ -27,10 +47,31 @@ void CheckRunConfig(const fs::path& run_dir, const SweepSpec& spec, const SweepC
   if (!*planned) *planned = ResolveCellConfig(spec, cell);
   RunConfig config = **planned;
   config.seed = seed;
-  if (ReadFile(path) != config::ToYaml(config))
-    throw InputError(path.string() +
-                     ": not the configuration the sweep's plan gives this run (sweep.yaml replaced, or the "
-                     "run copied from another sweep); re-run the sweep, or restore its sweep.yaml");
+  const std::string planned_yaml = config::ToYaml(config);
+  const std::string written = ReadFile(path);
+  if (written == planned_yaml) return;
+  // A run of an earlier vigil lacks the keys added since (evaluation.min_coverage, ...). Its verdict was
+  // given without them, so it is not mixed with this vigil's runs: say which keys, and how to go on.
+  std::vector<std::string> absent;
+  try {
+    const YAML::Node old_root = YAML::Load(written);
+    RunConfig old_config = LoadRunConfig(path.string());
+    if (config::ToYaml(old_config) == planned_yaml)
+      for (const std::string& key : LeafKeys(YAML::Load(planned_yaml)))
+        if (config::KeyLine(old_root, key) == 0) absent.push_back(key);
+  } catch (const std::exception&) {
+    absent.clear();  // not a configuration this vigil reads: the refusal below
+  }
+  if (!absent.empty()) {
+    std::string keys;
+    for (const std::string& key : absent) keys += (keys.empty() ? "" : ", ") + key;
+    throw InputError(path.string() + ": written by an earlier vigil, without " + keys +
+                     " (its verdict was given without them); re-run the sweep into a new directory, or "
+                     "with --force");
+  }
+  throw InputError(path.string() +
+                   ": not the configuration the sweep's plan gives this run (sweep.yaml replaced, or the "
+                   "run copied from another sweep); re-run the sweep, or restore its sweep.yaml");
 }
 }  // namespace
 
@@ -46,6 +87,7 @@ void CellResult::Merge(const CellResult& o) {
   runs += o.runs;
   failed += o.failed;
   diverged += o.diverged;
+  inconclusive += o.inconclusive;
   missing += o.missing;
   scored_samples += o.scored_samples;
   scored_flagged += o.scored_flagged;
@@ -80,6 +122,7 @@ void AddRunMetrics(const nlohmann::json& m, const std::vector<double>& distances
   ++cell->runs;
   if (IsFailed(m)) {
     ++cell->failed;
+    if (evaluation::MetricText(m, "status") == kInconclusive) ++cell->inconclusive;
     std::string reason = evaluation::MetricText(m, "failure_reason");
     ++cell->failure_reasons[reason.empty() ? "(no reason given)" : reason];
     return;

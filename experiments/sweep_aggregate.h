@@ -4,7 +4,8 @@
 // A cell is (group, method): a group is one combination of axis settings (a column of table 2, e.g.
 // "noise_50_10"). Errors are taken from the runs that finished (status ok or diverged: a diverged run's
 // error is large but measured, and the means include it as they did before the verdict existed); failed
-// runs are counted (with their reasons), diverged runs are counted beside them, runs not on disk are counted
+// runs are counted (with their reasons; inconclusive runs, whose errors rest on too little of the run, count
+// as failed and are also counted apart), diverged runs are counted beside them, runs not on disk are counted
 // as missing. Relative errors are pooled: the mean over every sub-trajectory of
 // every run (each run's mean weighted by its number of sub-trajectories n), as when all segments of all runs
 // are evaluated together. Detection precision/recall are pooled the same way (over samples).
@@ -25,6 +26,7 @@ namespace vigil::experiments {
 
 struct CellResult {
   std::size_t runs = 0, failed = 0, diverged = 0, missing = 0;
+  std::size_t inconclusive = 0;  // of the failed ones: status "inconclusive" (run_metrics.h)
   std::map<std::string, std::size_t> failure_reasons;  // reason -> count
   std::vector<double> ate_rmse_m;                      // one per successful run
   // Per distance (SweepAggregate::distances_m): sums of run mean x n, and of n.

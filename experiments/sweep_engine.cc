@@ -15,7 +15,9 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "core/thread_handoff.h"
+#include "experiments/child_process.h"
 #include "experiments/progress.h"
+#include "experiments/sweep_lock.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -106,6 +108,8 @@ SweepOutcome ExecuteSweep(const fs::path& sweep_dir, const std::vector<std::stri
       done->metrics = run(index, staging.path());
     } catch (const std::exception& e) {
       done->metrics = FailureMetrics(e.what());
+    } catch (const Interrupted&) {
+      throw;  // vigil was interrupted: not a failed run; the sweep stops
     } catch (...) {
       done->metrics = FailureMetrics("unknown exception");
     }
@@ -150,10 +154,12 @@ namespace {
 
 // Whether `dir` holds anything besides sweep.yaml being staged: a shard that starts beside another sees the
 // other's sweep.yaml staging for an instant before it is linked into place (CommitSweepFile), and that
-// directory is still a new sweep, not a user's directory.
+// directory is still a new sweep, not a user's directory. The sweep's lock file (experiments/sweep_lock.h)
+// does not count either: it is taken before the directory is prepared.
 bool HasEntriesBesidesSweepFileStaging(const fs::path& dir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    if (entry.path().filename() == kSweepLockFile) continue;
     const auto staging = ParseStagingName(entry.path().filename().string());
     if (!staging || staging->final_name != "sweep.yaml") return true;
   }
@@ -177,20 +183,21 @@ void CheckSweepDirectory(const fs::path& dir, bool resume, bool force) {
     throw InputError(dir.string() +
                      ": output directory is not empty (use --resume to continue the sweep "
                      "in it, or --force to start over)");
-  if (force && !resume && fs::exists(dir / "runs", ec) && !is_sweep)
-    throw InputError(dir.string() + ": has runs/ but no sweep.yaml: not a sweep directory, not replaced");
+  // Refused here, before the sweep takes its lock (a file in `dir`): nothing is written into a user's folder.
+  if (force && !resume && !is_sweep)
+    throw InputError(
+        dir.string() +
+        ": no sweep.yaml: not a sweep directory vigil wrote, so --force does not replace it; move it "
+        "away or choose another output");
 }
 
 void PrepareSweepDirectory(const fs::path& dir, bool resume, bool force) {
   CheckSweepDirectory(dir, resume, force);
   std::error_code ec;
-  const bool non_empty = fs::is_directory(dir, ec) && !fs::is_empty(dir, ec);
+  const bool non_empty = fs::is_directory(dir, ec) && HasEntriesBesidesSweepFileStaging(dir);
   if (non_empty && force && !resume) {
-    // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level.
-    if (!fs::exists(dir / "sweep.yaml", ec))
-      throw InputError(dir.string() +
-                       ": no sweep.yaml: not a sweep directory vigil wrote, so --force does not "
-                       "replace it; move it away or choose another output");
+    // Only the sweep's own layout is removed: runs/ and the files a sweep writes at the top level (a
+    // directory without sweep.yaml was refused above).
     fs::remove_all(dir / "runs", ec);
     fs::remove_all(dir / "figures", ec);
     for (const char* name : {"sweep.yaml", "results.csv", "timing.csv", "summary.md"})

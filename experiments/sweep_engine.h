@@ -61,8 +61,7 @@ SweepOutcome ExecuteSweep(const std::filesystem::path& sweep_dir, const std::vec
                           const SweepEngineOptions& options);
 
 // The checks of PrepareSweepDirectory, without writing anything: an existing non-empty `dir` is refused
-// (InputError) unless `resume` and it holds a sweep (sweep.yaml), or `force` and it is not a foreign
-// directory with a runs/ folder.
+// (InputError) unless it holds a sweep (sweep.yaml) and `resume` or `force` is given.
 void CheckSweepDirectory(const std::filesystem::path& dir, bool resume, bool force);
 
 // Prepares `dir` for a sweep: creates it; an existing non-empty one is refused (InputError) unless `resume`

@@ -12,6 +12,7 @@
 #include "experiments/detection_stage.h"
 #include "experiments/external_estimator.h"
 #include "experiments/results_csv.h"
+#include "experiments/sweep_lock.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -75,6 +76,9 @@ SweepPlan ResolveSweepPlan(const SweepSpec& spec) {
     // A sweep's runs are simulated: feature tracks, no camera images on disk.
     if (const std::string why = ExternalInputProblem(plan.configs.back(), false, true); !why.empty())
       ThrowCellError(spec, cell, why);
+    // A recording (or any input file) that is absent would fail every run of the cell: refused before any.
+    if (const std::string why = MissingInputProblem(plan.configs.back()); !why.empty())
+      ThrowCellError(spec, cell, why);
   }
   plan.runs = EnumerateRuns(spec, plan.cells);
   return plan;
@@ -129,7 +133,10 @@ SweepOutcome RunSweep(const SweepSpec& spec, const fs::path& dir, const SweepRun
     if (!keep_finished || !fs::is_regular_file(RunMetricsPath(dir, run.id), ec)) needed[run.cell] = true;
   const SweepTemplates templates = BuildSweepTemplates(spec, plan.configs, needed, options.threads);
 
-  // 2. The directory, sweep.yaml and the runs.
+  // 2. The directory, under the sweep's lock (a whole sweep alone, shards together), checked again now that
+  // no other sweep can change it; then sweep.yaml and the runs.
+  const SweepDirectoryLock lock(dir, options.shard.whole());
+  CheckSweepOutput(dir, resolved, options, runs);
   PrepareSweepDirectory(dir, keep_finished, options.force);
   CommitSweepFile(dir, resolved);
   RemoveStaleStaging(dir);  // results.csv.tmp-... of a killed sweep on this host

@@ -8,6 +8,7 @@
 #include "core/format.h"
 #include "core/imu_input.h"
 #include "core/output.h"
+#include "core/recording_files.h"
 #include "detectors/detector_options.h"
 #include "detectors/relative_threshold_detector.h"
 #include "experiments/run_config.h"
@@ -62,7 +63,9 @@ TemplatesResult BuildTemplateLibraryFile(const TemplatesRequest& request) {
           ? dataset_files::kImuClean
           : dataset_files::kImu;
   const ImuInput input = ResolveImuInput(request.dataset, file_in_dir);
-  RefuseOutputOverInputs(request.output, {input.imu, request.dataset});
+  std::vector<fs::path> inputs = RecordingInputPaths(request.dataset);
+  inputs.push_back(input.imu);
+  RefuseOutputOverInputs(request.output, inputs);
   // Never rename over a device, directory or other special file (e.g. -o /dev/null), nor over a file
   // vigil did not write.
   RefuseReplacingFile(request.output, request.force, detectors::kTemplateLibraryFirstLine);

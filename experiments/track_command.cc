@@ -7,6 +7,7 @@
 #include "core/euroc.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/recording_files.h"
 #include "experiments/frontend_metrics.h"
 #include "experiments/frontend_run.h"
 #include "experiments/frontend_stage.h"
@@ -60,7 +61,7 @@ TrackResult TrackToDirectory(const TrackRequest& request) {
   if (reprojection) result.outlier_ratio = reprojection->outlier_ratio;
   result.outlier_threshold_px = options.evaluation.outlier_threshold_px;
 
-  RefuseOutputOverInputs(request.output, {request.dataset});
+  RefuseOutputOverInputs(request.output, RecordingInputPaths(request.dataset));
   StagedDirectory out(request.output, request.force);
   WriteFileAtomic(out.path() / dataset_files::kFeatures, FeaturesCsv(tracked.frames));
   WriteFileAtomic(out.path() / "frontend.json", result.frontend.dump(2) + "\n");

@@ -72,10 +72,11 @@ ResultTable MakeTable4(const experiments::SweepAggregate& agg, const std::vector
 }
 
 std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiments::SweepAggregate& agg) {
-  std::size_t failed = 0, diverged = 0;
+  std::size_t failed = 0, diverged = 0, inconclusive = 0;
   for (const auto& c : agg.cells) {
     failed += c.failed;
     diverged += c.diverged;
+    inconclusive += c.inconclusive;
   }
   std::string s = "# Sweep summary\n\n";
   // File names only: the same summary wherever the sweep directory and the configs are.
@@ -84,8 +85,12 @@ std::string SummaryMarkdown(const experiments::SweepSpec& spec, const experiment
   s += std::to_string(agg.runs) + " runs (" + std::to_string(agg.groups.size()) + " groups x " +
        std::to_string(agg.methods.size()) + " methods x " + std::to_string(spec.seeds.size()) +
        " seeds): " + std::to_string(agg.runs - failed - diverged - agg.missing) + " ok, " +
-       std::to_string(diverged) + " diverged, " + std::to_string(failed) + " failed, " +
-       std::to_string(agg.missing) + " missing.\n\n";
+       std::to_string(diverged) + " diverged, " + std::to_string(failed) + " failed" +
+       (inconclusive > 0 ? " (" + std::to_string(inconclusive) +
+                               " of them inconclusive: too little coverage or motion for their errors to "
+                               "mean anything, evaluation.min_coverage and evaluation.min_alignment_extent_m)"
+                         : std::string()) +
+       ", " + std::to_string(agg.missing) + " missing.\n\n";
   s += "Errors are over the runs that finished: ok and diverged (an ATE RMSE beyond the divergence bound, "
        "evaluation.divergence; counted in the diverged column), not failed ones. Relative errors are pooled "
        "over every sub-trajectory of every "

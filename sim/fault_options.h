@@ -31,13 +31,13 @@ struct SaturationOptions {
            "+-2000 deg/s), or none (the *_range keys below; 0 = unbounded)");
     v.Field("accel_range_mps2", accel_range_mps2,
             "accelerometer full-scale range per axis [m/s^2] (0: unbounded; must exceed gravity)",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1e6));
     v.Field("accel_range_g", accel_range_g,
             "accelerometer full-scale range per axis in units of gravity_mps2 [g] (alternative to "
             "accel_range_mps2)",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1e5));
     v.Field("gyro_range_dps", gyro_range_dps, "gyro full-scale range per axis [deg/s] (0: unbounded)",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1e6));
   }
 };
 
@@ -52,8 +52,9 @@ struct QuantizationOptions {
   void Visit(V& v) {
     using config::Bounds;
     v.Field("accel_lsb_mps2", accel_lsb_mps2, "accelerometer resolution (LSB) [m/s^2] (0: none)",
-            Bounds::NonNegative());
-    v.Field("gyro_lsb_dps", gyro_lsb_dps, "gyro resolution (LSB) [deg/s] (0: none)", Bounds::NonNegative());
+            Bounds::Closed(0.0, 100.0));
+    v.Field("gyro_lsb_dps", gyro_lsb_dps, "gyro resolution (LSB) [deg/s] (0: none)",
+            Bounds::Closed(0.0, 100.0));
   }
 };
 
@@ -68,13 +69,18 @@ struct ScaleMisalignmentOptions {
 
   template <class V>
   void Visit(V& v) {
+    using config::Bounds;
     v.Field("accel_scale", accel_scale,
-            "accelerometer scale-factor error per axis x, y, z (3 numbers; 0.01 = +1 %) [fraction]");
-    v.Field("gyro_scale", gyro_scale, "gyro scale-factor error per axis x, y, z (3 numbers) [fraction]");
+            "accelerometer scale-factor error per axis x, y, z (3 numbers; 0.01 = +1 %) [fraction]",
+            Bounds::Closed(-1.0, 1.0));
+    v.Field("gyro_scale", gyro_scale, "gyro scale-factor error per axis x, y, z (3 numbers) [fraction]",
+            Bounds::Closed(-1.0, 1.0));
     v.Field("accel_misalignment_deg", accel_misalignment_deg,
-            "accelerometer axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]");
+            "accelerometer axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]",
+            Bounds::Closed(-45.0, 45.0));
     v.Field("gyro_misalignment_deg", gyro_misalignment_deg,
-            "gyro axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]");
+            "gyro axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]",
+            Bounds::Closed(-45.0, 45.0));
   }
 };
 
@@ -97,7 +103,7 @@ struct TimingFaultOptions {
     v.Field(
         "jitter_std_s", jitter_std_s,
         "std of the Gaussian timestamp jitter, clipped to +-0.45 IMU periods so that the order is kept [s]",
-        Bounds::NonNegative());
+        Bounds::Closed(0.0, 1.0));
   }
 };
 

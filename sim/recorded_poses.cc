@@ -8,15 +8,15 @@
 #include "core/error.h"
 #include "core/euroc.h"
 #include "core/format.h"
+#include "core/ground_truth_gap.h"
 #include "core/output.h"
-#include "core/so3.h"
+#include "core/pose_checks.h"
 
 namespace vigil::sim {
 namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kEurocColumns = 17;
-constexpr double kUnitTolerance = 1e-3;
 
 // The ground-truth file a folder stands for (EuRoC layout), or `path` itself.
 fs::path GroundTruthFile(const fs::path& path) {
@@ -57,8 +57,8 @@ std::size_t HeaderColumns(const std::string& text) {
 }
 
 Eigen::Quaterniond UnitQuaternion(const Eigen::Quaterniond& q, const std::string& file, int line) {
-  if (std::abs(q.norm() - 1.0) > kUnitTolerance)
-    throw InputError(Located(file, line, "quaternion is not unit (norm " + FormatDouble(q.norm()) + ")"));
+  if (const std::string problem = QuaternionNormProblem(q); !problem.empty())
+    throw InputError(Located(file, line, problem));
   return q.normalized();
 }
 
@@ -139,17 +139,16 @@ void CheckSequence(const std::vector<TimedPose>& poses, const std::vector<int>& 
                                "timestamp " + std::to_string(p.t_ns) + " ns does not increase (previous " +
                                    std::to_string(q.t_ns) + " ns)"));
     const double dt_s = NsToS(p.t_ns - q.t_ns);
+    if (p.t_ns - q.t_ns > kMaxGroundTruthGap_ns)
+      throw InputError(Located(file, lines[k], GroundTruthGapReason(dt_s)));
     const double speed = (p.p_W - q.p_W).norm() / dt_s;
     if (speed > kMaxRecordedSpeed_mps)
       throw InputError(Located(file, lines[k],
                                "position jumps " + FormatDouble((p.p_W - q.p_W).norm()) + " m in " +
                                    FormatDouble(dt_s) + " s since the previous row (faster than " +
                                    FormatDouble(kMaxRecordedSpeed_mps) + " m/s: not a motion)"));
-    const double angle = AngleOf(q.q_WB.conjugate() * p.q_WB);
-    if (angle > kMaxRecordedRotationStep_rad)
-      throw InputError(Located(file, lines[k],
-                               "orientation jumps " + FormatDouble(angle * 180.0 / 3.14159265358979323846) +
-                                   " deg since the previous row (more than 90 deg between two poses)"));
+    if (const std::string problem = RotationStepProblem(q.q_WB, p.q_WB); !problem.empty())
+      throw InputError(Located(file, lines[k], problem));
   }
 }
 

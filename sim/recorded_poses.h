@@ -6,9 +6,10 @@
 //   v_W (x y z) [m/s], biases (ignored), further columns ignored;
 // - the folder holding that file's mav0/ folder, or mav0/ itself;
 // - a TUM / rpg text trajectory: whitespace-separated "timestamp [s] tx ty tz qx qy qz qw", '#' comments.
-// Rows must have finite values, strictly increasing timestamps and unit quaternions (to 1e-3; renormalized);
-// at least 2 rows; consecutive poses must not jump (more than kMaxRecordedSpeed_mps, or more than
-// kMaxRecordedRotationStep_rad between two rows). Errors: InputError "file:line: reason".
+// Rows must have finite values, strictly increasing timestamps and unit quaternions (core/pose_checks.h;
+// renormalized); at least 2 rows; consecutive poses must not jump (more than kMaxRecordedSpeed_mps, or more
+// than kMaxPoseRotationStep_rad between two rows, core/pose_checks.h), and no gap between two rows may exceed
+// 1 s (kMaxGroundTruthGap_ns, core/ground_truth_gap.h). Errors: InputError "file:line: reason".
 #pragma once
 
 #include <cstdint>
@@ -35,8 +36,6 @@ struct TimedPose {
 
 // A recorded pose faster than this between two rows is a jump of the recording, not a motion.
 inline constexpr double kMaxRecordedSpeed_mps = 100.0;
-// Largest rotation between two consecutive rows: beyond a quarter turn the interpolation is ambiguous.
-inline constexpr double kMaxRecordedRotationStep_rad = 1.5707963267948966;
 
 std::vector<TimedPose> ReadRecordedPoses(const std::filesystem::path& path);
 

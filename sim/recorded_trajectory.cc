@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/so3.h"
 #include "core/types.h"
 #include "sim/spline_fit.h"
@@ -23,14 +24,29 @@ const std::vector<TimedPose>& Checked(const std::vector<TimedPose>& poses) {
 }
 
 CumulativeBSpline Fitted(const std::vector<TimedPose>& poses, const RecordedTrajectoryOptions& options) {
+  const double span_s = static_cast<double>(poses.back().t_ns - poses.front().t_ns) / 1e9;
+  const double dt_s = options.knot_spacing_s > 0.0 ? options.knot_spacing_s : MedianPoseSpacing(poses);
+  const double control_points = SplineControlPoints(span_s, dt_s);
+  if (!(control_points <= kMaxSplineControlPoints))
+    throw InputError(
+        "trajectory.spline.knot_spacing_s: " +
+        (options.knot_spacing_s > 0.0
+             ? FormatDouble(dt_s) + " s"
+             : "0 (the recording's median pose spacing, " + FormatDouble(dt_s) + " s)") +
+        " over the recording's " + FormatDouble(span_s) + " s needs " + FormatPrintf("%.0f", control_points) +
+        " spline control points, more than the limit of " + FormatPrintf("%.0f", kMaxSplineControlPoints) +
+        "; set a larger spacing, at least " + FormatDouble(span_s / (kMaxSplineControlPoints - 3)) + " s");
   std::vector<SplineFitPose> samples;
   samples.reserve(poses.size());
   for (const TimedPose& p : poses) samples.push_back({NsToS(p.t_ns - poses.front().t_ns), p.p_W, p.q_WB});
-  const double dt_s = options.knot_spacing_s > 0.0 ? options.knot_spacing_s : MedianPoseSpacing(poses);
   return FitCumulativeBSpline(samples, dt_s, options.smoothing);
 }
 
 }  // namespace
+
+double SplineControlPoints(double span_s, double dt_s) {
+  return std::max(1.0, std::ceil(span_s / dt_s - 1e-9)) + 3.0;  // as FitCumulativeBSpline lays them out
+}
 
 double MedianPoseSpacing(const std::vector<TimedPose>& poses) {
   std::vector<int64_t> gaps;

@@ -20,6 +20,15 @@
 
 namespace vigil::sim {
 
+// The most control points a fitted spline may have: the fit's memory and time grow with them (199,003
+// control points took 1.1 GB and 106 s), so trajectory.spline.knot_spacing_s (or a recording's own span and
+// median pose spacing) is checked against this before anything is allocated. 100,000 is over 8 minutes of
+// a 200 Hz ground truth at its own spacing (EuRoC's longest sequence is 3 minutes).
+inline constexpr double kMaxSplineControlPoints = 100000;
+
+// The control points a spline with knots `dt_s` apart over `span_s` seconds has (segments + 3).
+double SplineControlPoints(double span_s, double dt_s);
+
 // How far the fitted spline is from the recording, over all recorded poses.
 struct FitReport {
   std::size_t poses = 0;

@@ -10,6 +10,13 @@
 namespace vigil::sim {
 
 std::string ValidateRecordingFaultOptions(const RecordingFaultOptions& options) {
+  // A recording's camera frames are its own: camera timing faults are the simulator's alone.
+  if (options.faults.camera.drop_rate != 0.0 || options.faults.camera.jitter_std_s != 0.0)
+    return std::string("faults.camera.") +
+           (options.faults.camera.drop_rate != 0.0 ? "drop_rate" : "jitter_std_s") +
+           ": inject applies IMU faults only; a recording's camera frames are kept as recorded (camera "
+           "timing "
+           "faults are simulated by vigil simulate and vigil run)";
   const std::string why = ValidateFaultOptions(options.faults, options.gravity_mps2);
   return why.empty() ? why : "faults." + why;
 }

@@ -30,7 +30,7 @@ struct RecordingFaultOptions {
   void Visit(V& v) {
     v.Field("seed", seed, "seed of the fault draws (the simulator's streams: glitch, glitch_offset, timing)");
     v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity [m/s^2] (saturation ranges given in g)",
-            config::Bounds::Positive());
+            config::Bounds{0.0, 100.0, true, false});
     v.Section("glitch", glitch, "offset glitches, as in the simulator");
     v.Section("faults", faults, "low-cost IMU faults besides the glitches, as in the simulator");
   }
@@ -50,7 +50,8 @@ FaultedRecording InjectIntoRecording(const RecordingFaultOptions& options, const
                                      const ImuStream& recorded_clean,
                                      const std::vector<GlitchRecord>& recorded_glitches);
 
-// Cross-field checks (faults.*); empty when valid, else "key: reason".
+// Cross-field checks (faults.*); empty when valid, else "key: reason". faults.camera.* other than 0 is
+// refused: a recording's camera frames are not touched.
 std::string ValidateRecordingFaultOptions(const RecordingFaultOptions& options);
 
 }  // namespace vigil::sim

@@ -1,13 +1,16 @@
 #include "sim/sim_options.h"
 
+#include "core/data_dir.h"
 #include "core/error.h"
+#include "core/format.h"
 
 namespace vigil::sim {
 
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options) {
   for (std::string* file :
        {&options->trajectory.waypoints_file, &options->trajectory.recording, &options->imu.recording}) {
-    if (file->empty() || std::filesystem::path(*file).is_absolute()) continue;
+    *file = ExpandDataDir(*file);  // left as it is while VIGIL_DATA is unset: ValidateSimOptions says so
+    if (file->empty() || NamesDataDir(*file) || std::filesystem::path(*file).is_absolute()) continue;
     *file = std::filesystem::absolute(base_dir / *file).lexically_normal().string();
   }
 }
@@ -16,10 +19,23 @@ void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* opt
 constexpr double kMinDuration_s = 0.5;
 
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
-  if (!(options.duration_s >= kMinDuration_s))
-    throw InputError(origin +
-                     ": duration_s: must be at least 0.5 s (0, to the end of the trajectory, needs " +
-                     "trajectory.type waypoints or recording)");
+  for (const auto& [key, file] : {std::pair{"trajectory.waypoints_file", &options.trajectory.waypoints_file},
+                                  std::pair{"trajectory.recording", &options.trajectory.recording},
+                                  std::pair{"imu.recording", &options.imu.recording}})
+    if (const std::string why = UnsetDataDirReason(*file); !why.empty())
+      throw InputError(origin + ": " + key + ": " + why);
+  if (!(options.duration_s >= kMinDuration_s)) {
+    // 0 was resolved to the trajectory's own length when it has one (ResolveDurationToEnd).
+    const TrajectoryOptions& t = options.trajectory;
+    const char* file = t.type == TrajectoryType::kWaypoints && !t.waypoints_file.empty() ? "waypoints_file"
+                       : t.type == TrajectoryType::kRecording && !t.recording.empty()    ? "recording"
+                                                                                         : nullptr;
+    throw InputError(
+        origin + ": duration_s: must be at least 0.5 s, got " + FormatDouble(options.duration_s) + " s" +
+        (file ? std::string(" (0 runs to the end of trajectory.") + file + ", which is shorter than that)"
+              : std::string(" (0, to the end of the trajectory, needs trajectory.type waypoints "
+                            "or recording)")));
+  }
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);
   if (options.glitch.enabled && options.glitch.axes.empty())

@@ -51,11 +51,12 @@ struct TrajectoryOptions {
         "motion model: ellipse (vio_data_simulation reference), rescue (ground robot over ramps and steps), "
         "waypoints (C2 spline through timed poses), recording (B-spline fitted to a recorded ground truth)");
     v.Field("waypoints_file", waypoints_file,
-            "timed pose CSV for type waypoints (relative to the config file; see configs/README.md)");
+            "timed pose CSV for type waypoints (relative to the config file, or $VIGIL_DATA/...; see "
+            "configs/README.md)");
     v.Field("recording", recording,
             "ground truth for type recording: EuRoC state_groundtruth_estimate0/data.csv (or its mav0 folder "
-            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file; see "
-            "docs/recordings-trajectory.md)");
+            "or the folder holding mav0) or a TUM / rpg text file (relative to the config file, or "
+            "$VIGIL_DATA/...; see docs/recordings-trajectory.md)");
     v.Section("spline", spline, "the spline fitted to a recording (type recording)");
   }
 };
@@ -104,26 +105,29 @@ struct ImuNoiseOptions {
     using config::Bounds;
     v.Field("enabled", enabled,
             "add white noise, initial biases and bias random walk (false: ideal IMU, zero bias)");
+    // Every key that feeds the IMU is bounded far beyond any sensor (a consumer part is near 0.01), and so
+    // that the samples stay values a dataset may hold (|IMU values| <= 1e6, docs/formats.md).
     v.Field("gyro_noise_density", gyro_noise_density, "gyro white noise density [rad/s/sqrt(Hz)]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 10.0));
     v.Field("accel_noise_density", accel_noise_density, "accelerometer white noise density [m/s^2/sqrt(Hz)]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 100.0));
     v.Field("gyro_bias_random_walk", gyro_bias_random_walk, "gyro bias random walk [rad/s^2/sqrt(Hz)]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1.0));
     v.Field("accel_bias_random_walk", accel_bias_random_walk,
-            "accelerometer bias random walk [m/s^3/sqrt(Hz)]", Bounds::NonNegative());
-    v.Field("initial_gyro_bias", initial_gyro_bias, "gyro bias b_g at t = 0 (3 numbers: x, y, z) [rad/s]");
+            "accelerometer bias random walk [m/s^3/sqrt(Hz)]", Bounds::Closed(0.0, 10.0));
+    v.Field("initial_gyro_bias", initial_gyro_bias, "gyro bias b_g at t = 0 (3 numbers: x, y, z) [rad/s]",
+            Bounds::Closed(-100.0, 100.0));
     v.Field("initial_accel_bias", initial_accel_bias,
-            "accelerometer bias b_a at t = 0 (3 numbers: x, y, z) [m/s^2]");
+            "accelerometer bias b_a at t = 0 (3 numbers: x, y, z) [m/s^2]", Bounds::Closed(-1000.0, 1000.0));
     v.Field("switch_on_gyro_bias_std", switch_on_gyro_bias_std,
             "spread of the gyro bias at switch-on: N(0, std^2) per axis, drawn once per run and added to "
             "initial_gyro_bias [rad/s]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 10.0));
     v.Field(
         "switch_on_accel_bias_std", switch_on_accel_bias_std,
         "spread of the accelerometer bias at switch-on: N(0, std^2) per axis, drawn once per run and added "
         "to initial_accel_bias [m/s^2]",
-        Bounds::NonNegative());
+        Bounds::Closed(0.0, 100.0));
   }
 };
 
@@ -147,13 +151,13 @@ struct ImuVibrationOptions {
         "frequency_hz", frequency_hz,
         "centre frequency of the vibration (a rotor or track frequency; above half imu.rate_hz it aliases "
         "as in a real sampled sensor) [Hz] (0: no vibration)",
-        Bounds::NonNegative());
+        Bounds::Closed(0.0, 1e6));
     v.Field("bandwidth_hz", bandwidth_hz, "width of the vibration band around frequency_hz [Hz]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1e6));
     v.Field("accel_rms_mps2", accel_rms_mps2, "vibration rms on each accelerometer axis [m/s^2]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 1000.0));
     v.Field("gyro_rms_radps", gyro_rms_radps, "vibration rms on each gyro axis [rad/s]",
-            Bounds::NonNegative());
+            Bounds::Closed(0.0, 100.0));
     v.Field("components", components,
             "sinusoids per axis, each with a random frequency in the band and a random phase",
             Bounds::Closed(1, 1000));
@@ -181,12 +185,13 @@ struct ImuOptions {
            "camera tracks synthesized along its ground truth (a semi-real dataset, docs/recordings.md)");
     v.Field("recording", recording,
             "recording for source recording: a EuRoC folder (holding mav0/, or mav0/ itself) or a vigil "
-            "dataset, with ground truth and a camera (relative to the config file)");
+            "dataset, with ground truth and a camera (relative to the config file, or $VIGIL_DATA/...: "
+            "inside the folder the environment variable VIGIL_DATA names, docs/datasets.md)");
     v.Field("recording_start_s", recording_start_s,
             "source recording: start of the semi-real window after the first ground-truth row [s]; the "
             "window lasts duration_s",
             config::Bounds::NonNegative());
-    v.Field("rate_hz", rate_hz, "IMU sampling rate [Hz]", config::Bounds::Positive());
+    v.Field("rate_hz", rate_hz, "IMU sampling rate [Hz]", config::Bounds{0.0, 1e5, true, false});
     v.Enum("preset", preset,
            config::EnumNames<ImuPreset>{{"none", ImuPreset::kNone},
                                         {"adis16448", ImuPreset::kAdis16448},
@@ -248,7 +253,7 @@ struct SimOptions {
             "recording)",
             config::Bounds::Closed(0.0, 1e6));
     v.Field("gravity_mps2", gravity_mps2, "magnitude g of gravity g_W = (0, 0, -g) [m/s^2]",
-            config::Bounds::Positive());
+            config::Bounds{0.0, 100.0, true, false});
     v.Section("trajectory", trajectory, "body motion");
     v.Section("landmarks", landmarks, "3-D landmarks");
     v.Section("imu", imu, "IMU sampling and noise");
@@ -262,7 +267,9 @@ struct SimOptions {
 
 // Makes a relative trajectory.waypoints_file, trajectory.recording or imu.recording absolute, relative to
 // `base_dir` (the config file's directory for paths read from a file, the working directory for --set
-// values), so a written config.yaml works from anywhere. Empty and absolute paths are left alone.
+// values), so a written config.yaml works from anywhere. "$VIGIL_DATA/..." becomes a path in the folder the
+// environment variable names (core/data_dir.h; left as it is while VIGIL_DATA is unset, which
+// ValidateSimOptions refuses). Empty and absolute paths are left alone.
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options);
 
 // duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the

@@ -34,11 +34,7 @@ std::vector<Eigen::Vector3d> SamplePath(const TrajectoryModel& motion, double du
 // The validated motion model of `options`, covering options.duration_s.
 std::unique_ptr<TrajectoryModel> CheckedMotion(const SimOptions& options) {
   ValidateSimOptions(options, "simulator options");
-  std::unique_ptr<TrajectoryModel> motion = MakeTrajectoryModel(options.trajectory);
-  if (options.duration_s > motion->EndTime())
-    throw InputError("duration_s: " + FormatDouble(options.duration_s) +
-                     " s exceeds the end of the trajectory (" + FormatDouble(motion->EndTime()) + " s)");
-  return motion;
+  return MakeTrajectoryModel(options.trajectory, options.duration_s);
 }
 
 }  // namespace

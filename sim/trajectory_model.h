@@ -38,7 +38,9 @@ class TrajectoryModel {
 };
 
 // Builds the model selected by `options.type`. Throws InputError (naming trajectory.* keys) when the model's
-// input is bad, e.g. an unreadable or malformed waypoints file.
-std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& options);
+// input is bad, e.g. an unreadable or malformed waypoints file, and (naming duration_s) when the model ends
+// before `duration_s`: a recording's span is checked before its spline is fitted.
+std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& options,
+                                                     double duration_s = 0.0);
 
 }  // namespace vigil::sim

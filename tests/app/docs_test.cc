@@ -298,6 +298,25 @@ std::vector<std::string> UnknownCommandsAndFlags(const CommandLine& cli, const s
   return unknown;
 }
 
+// A row of the README's command table: it starts with a `vigil ...` span.
+bool IsCommandRow(const MarkdownLine& line) { return !line.fenced && line.text.rfind("| `vigil ", 0) == 0; }
+
+// Reasons for every command that the command table of `markdown` (README.md) lists in more than one row.
+std::vector<std::string> RepeatedTableCommands(const std::string& markdown) {
+  static const std::regex command(R"(^\| `vigil ([a-z][a-z0-9_-]*))");
+  std::map<std::string, int> first_row;
+  std::vector<std::string> repeated;
+  for (const MarkdownLine& line : ParseLines(markdown)) {
+    std::smatch m;
+    if (!IsCommandRow(line) || !std::regex_search(line.text, m, command)) continue;
+    const auto [first, inserted] = first_row.emplace(m[1].str(), line.number);
+    if (!inserted)
+      repeated.push_back("README.md:" + std::to_string(line.number) + ": vigil " + m[1].str() +
+                         " is listed again (first at line " + std::to_string(first->second) + ")");
+  }
+  return repeated;
+}
+
 TEST(Documentation, EveryRelativeLinkPointsAtAFileInTheRepository) {
   ASSERT_TRUE(fs::is_regular_file(kRoot / "docs" / "README.md")) << "docs/README.md (the index) is missing";
   std::vector<std::string> broken;
@@ -333,7 +352,7 @@ TEST(Documentation, EveryDocumentedCommandAndFlagExists) {
   const fs::path readme = kRoot / "README.md";
   int rows = 0;
   for (const MarkdownLine& line : ParseLines(ReadText(readme))) {
-    if (line.fenced || line.text.rfind("| `vigil ", 0) != 0) continue;
+    if (!IsCommandRow(line)) continue;
     ++rows;
     for (const std::string& span : CodeSpans(line.text)) check(readme, line, span);
   }
@@ -343,7 +362,14 @@ TEST(Documentation, EveryDocumentedCommandAndFlagExists) {
   EXPECT_TRUE(unknown.empty()) << report;
 }
 
-// The checks themselves: a broken link, a missing anchor and an unknown flag are found.
+TEST(Documentation, TheReadmeCommandTableListsEachCommandOnce) {
+  std::string report;
+  for (const std::string& reason : RepeatedTableCommands(ReadText(kRoot / "README.md")))
+    report += reason + "\n";
+  EXPECT_TRUE(report.empty()) << report;
+}
+
+// The checks themselves: a broken link, a missing anchor, an unknown flag and a repeated row are found.
 TEST(Documentation, TheChecksFindWhatIsWrong) {
   const fs::path dir =
       fs::weakly_canonical(fs::temp_directory_path()) / ("vigil_docs_test_" + std::to_string(::getpid()));
@@ -370,6 +396,12 @@ TEST(Documentation, TheChecksFindWhatIsWrong) {
 
   EXPECT_EQ(HeadingAnchors("# Run directory\n## `vigil run` (one run)\n# Run directory\n"),
             (std::set<std::string>{"run-directory", "vigil-run-one-run", "run-directory-1"}));
+
+  EXPECT_EQ(RepeatedTableCommands(
+                "| command | what |\n|---|---|\n| `vigil run CONFIG` | one |\n"
+                "| `vigil plot run\\|sweep DIR` | figures |\n| `vigil run CONFIG -o DIR` | again |\n"
+                "```text\n| `vigil run CONFIG` | fenced |\n```\n"),
+            (std::vector<std::string>{"README.md:5: vigil run is listed again (first at line 3)"}));
 
   const CommandLine& cli = Cli();
   EXPECT_TRUE(UnknownCommandsAndFlags(cli, "vigil run CONFIG -o DIR --force").empty());

@@ -142,6 +142,44 @@ TEST_F(RecordingsCli, InjectIntoAEurocFolderLinksTheImages) {
   EXPECT_NE(c.err.find("per sample: precision"), std::string::npos) << c.err;
 }
 
+// A recording is its known files: links out of it (to /usr, back into it, a loop) are never followed, and
+// an image folder linked elsewhere is an input too, so no output may be written into it.
+TEST_F(RecordingsCli, InjectTakesTheRecordingsOwnFilesAndNeverWritesThroughItsLinks) {
+  const fs::path ds = tmp_.path() / "ds", eu = tmp_.path() / "eu", images = tmp_.path() / "images";
+  const std::string small =
+      tmp_.File("small.yaml",
+                "duration_s: 1\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
+  ASSERT_EQ(Vigil(tmp_, "simulate " + small + " -o " + ds.string() + " --images").status, 0);
+  fs::create_directories(eu);
+  fs::copy(ds / "mav0", eu / "mav0", fs::copy_options::recursive);
+  fs::rename(eu / "mav0" / "cam0" / "data", images);
+  fs::create_directory_symlink(images, eu / "mav0" / "cam0" / "data");
+  fs::create_directory_symlink("/usr", eu / "mav0" / "usr_link");
+  fs::create_directory_symlink("..", eu / "mav0" / "loop");
+  fs::create_directory_symlink(".", eu / "loop");
+
+  for (const std::string command : {"inject", "estimate"})
+    ExpectRefused(command + " " + eu.string() + " -o " + (images / "sub").string(),
+                  "the output lies inside the input " + (eu / "mav0" / "cam0" / "data").string(),
+                  images / "sub");
+
+  const fs::path injected = tmp_.path() / "injected";
+  const CliResult r = Vigil(tmp_, "inject " + eu.string() + " -o " + injected.string() + " " + kGlitches);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(
+      r.err.find("3 entries that are not part of a recording left out (loop, mav0/loop, mav0/usr_link)"),
+      std::string::npos)
+      << r.err;
+  EXPECT_EQ(fs::canonical(injected / "mav0" / "cam0" / "data"), fs::canonical(images));
+  for (const fs::path& absent :
+       {injected / "loop", injected / "mav0" / "loop", injected / "mav0" / "usr_link"})
+    EXPECT_FALSE(fs::exists(fs::symlink_status(absent))) << absent;
+  // The copy holds the recording: every file it lists except the new IMU and labels is the source's.
+  EXPECT_EQ(ReadFile(injected / "mav0" / "cam0" / "data.csv"), ReadFile(eu / "mav0" / "cam0" / "data.csv"));
+  EXPECT_EQ(ReadFile(injected / "mav0" / "state_groundtruth_estimate0" / "data.csv"),
+            ReadFile(eu / "mav0" / "state_groundtruth_estimate0" / "data.csv"));
+}
+
 // The shared real recording (../shared/data beside the repository): the MAV stands still for all 95 images.
 // Without the static start the visual-inertial initializer never starts and says why; with it (the default)
 // the run starts in its first window and holds still.

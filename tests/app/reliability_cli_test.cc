@@ -160,6 +160,32 @@ TEST_F(ReliabilityCli, TablesRefusesCorruptForeignOrMisplacedRunData) {
   Expect("tables " + dir, 2, "not the configuration the sweep's plan gives this run");
 }
 
+// A run of an earlier vigil, whose config.yaml lacks the keys added since (here the inconclusive verdict's),
+// is not tabulated or resumed with this vigil's runs: one line names the keys it lacks.
+TEST_F(ReliabilityCli, ARunOfAnEarlierVigilIsNamedWithTheKeysItLacks) {
+  const std::string dir = TinySweep();
+  fs::path run;
+  for (const auto& e : fs::directory_iterator(fs::path(dir) / "runs")) run = e.path();
+  const std::string config = ReadFile(run / "config.yaml");
+  std::string old;
+  for (std::size_t begin = 0, end; begin < config.size(); begin = end + 1) {
+    end = config.find('\n', begin);
+    const std::string line = config.substr(begin, end - begin);
+    if (line.find("min_coverage:") == std::string::npos &&
+        line.find("min_alignment_extent_m:") == std::string::npos)
+      old += line + "\n";
+  }
+  ASSERT_LT(old.size(), config.size());
+  WriteFileAtomic(run / "config.yaml", old);
+  const std::string reason =
+      "config.yaml: written by an earlier vigil, without evaluation.min_coverage, "
+      "evaluation.min_alignment_extent_m (its verdict was given without them)";
+  Expect("tables " + dir, 2, reason);
+  Expect("sweep " + Path("tiny.yaml") + " -o " + dir + " --resume --quiet -j 1", 2, reason);
+  WriteFileAtomic(run / "config.yaml", config);
+  EXPECT_EQ(Vigil(tmp_, "tables " + dir).status, 0);
+}
+
 TEST_F(ReliabilityCli, SlurmSubmitNeverRunsWhatSbatchPrints) {
   const std::string sweep = TinySweepFile();
   fs::create_directories(tmp_.path() / "bin");

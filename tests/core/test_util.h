@@ -1,6 +1,7 @@
 // Helpers for tests that write files: a fresh temporary directory per test, removed afterwards.
 #pragma once
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/data_dir.h"
 #include "core/error.h"
 
 namespace vigil::testing {
@@ -44,5 +46,21 @@ std::string InputErrorOf(F&& f) {
   }
   return "";
 }
+
+// VIGIL_DATA set to `value` (unset: nullptr) for one test, restored after it.
+class ScopedDataDir {
+ public:
+  explicit ScopedDataDir(const char* value) {
+    if (const char* old = std::getenv(kDataDirVariable)) old_ = old, had_ = true;
+    value ? setenv(kDataDirVariable, value, 1) : unsetenv(kDataDirVariable);
+  }
+  ~ScopedDataDir() { had_ ? setenv(kDataDirVariable, old_.c_str(), 1) : unsetenv(kDataDirVariable); }
+  ScopedDataDir(const ScopedDataDir&) = delete;
+  ScopedDataDir& operator=(const ScopedDataDir&) = delete;
+
+ private:
+  std::string old_;
+  bool had_ = false;
+};
 
 }  // namespace vigil::testing

@@ -151,5 +151,58 @@ TEST(EvaluateTrajectory, MatchesRpgTrajectoryEvaluationOnTheSameFiles) {
   }
 }
 
+// A run's errors are no result when they rest on too little of it: one or two matched poses of a whole
+// ground truth (one pose aligns exactly), or a yaw fitted to a centimetre of travel.
+TEST(EvaluateTrajectory, TooLittleCoverageOrMotionIsInconclusive) {
+  const Trajectory gt = Ellipse(20);
+  const Trajectory two_poses(gt.begin(), gt.begin() + 2);
+  const TrajectoryEvaluation few = EvaluateTrajectory(gt, two_poses, EvaluationOptions{});
+  EXPECT_EQ(few.matched_poses, 2u);
+  EXPECT_NE(few.inconclusive_reason.find("is below evaluation.min_coverage 25.0 %"), std::string::npos)
+      << few.inconclusive_reason;
+  EXPECT_FALSE(few.diverged);
+  const Trajectory quarter(gt.begin(), gt.begin() + static_cast<long>(gt.size() / 4) + 1);
+  EXPECT_EQ(EvaluateTrajectory(gt, quarter, EvaluationOptions{}).inconclusive_reason, "");
+  const Trajectory less(gt.begin(), gt.begin() + static_cast<long>(gt.size() / 4) - 1);
+  EXPECT_NE(EvaluateTrajectory(gt, less, EvaluationOptions{}).inconclusive_reason, "");
+  EXPECT_EQ(EvaluateTrajectory(gt, gt, EvaluationOptions{}).inconclusive_reason, "");
+
+  // Standing still (1 cm of jitter): the yaw of posyaw is arbitrary, so no ATE is computed ...
+  Trajectory still_gt, still_est;
+  for (int k = 0; k < 120; ++k) {
+    StampedPose p;
+    p.t_ns = SToNs(k / 30.0);
+    p.p_W = Eigen::Vector3d(0.01 * std::sin(k), 0.005 * std::cos(k), 1.0);
+    still_gt.push_back(p);
+    p.q_WB = Eigen::Quaterniond(RotZ(0.001 * k));
+    still_est.push_back(p);
+  }
+  const TrajectoryEvaluation still = EvaluateTrajectory(still_gt, still_est, EvaluationOptions{});
+  EXPECT_FALSE(still.alignment_defined);
+  EXPECT_LT(still.alignment_extent_m, 0.02);
+  EXPECT_NE(still.inconclusive_reason.find("too little motion to define the posyaw alignment"),
+            std::string::npos)
+      << still.inconclusive_reason;
+  EXPECT_EQ(still.ate_trans_m.n, 0);
+  EXPECT_EQ(still.ate_rot_deg.n, 0);
+  const nlohmann::json json = EvaluationJson(still);
+  EXPECT_EQ(json["ate"]["alignment_defined"], false);
+  EXPECT_TRUE(json["ate"]["rot_deg"]["rmse"].is_null());
+  EXPECT_NE(EvaluationTable(still).find("inconclusive: the matched ground truth spans"), std::string::npos);
+  // ... while without alignment the same run has its errors, and a vertical motion does not define a yaw.
+  EvaluationOptions none;
+  none.align = Alignment::kNone;
+  const TrajectoryEvaluation unaligned = EvaluateTrajectory(still_gt, still_est, none);
+  EXPECT_TRUE(unaligned.alignment_defined);
+  EXPECT_EQ(unaligned.inconclusive_reason, "");
+  EXPECT_NEAR(unaligned.ate_rot_deg.max, 0.001 * 119 * 180 / M_PI, 1e-6);
+  Trajectory lift = still_gt;
+  for (std::size_t k = 0; k < lift.size(); ++k) lift[k].p_W.z() = 0.02 * static_cast<double>(k);
+  EXPECT_FALSE(EvaluateTrajectory(lift, lift, EvaluationOptions{}).alignment_defined);
+  EvaluationOptions se3;
+  se3.align = Alignment::kSe3;
+  EXPECT_TRUE(EvaluateTrajectory(lift, lift, se3).alignment_defined);
+}
+
 }  // namespace
 }  // namespace vigil::evaluation

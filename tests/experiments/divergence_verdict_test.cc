@@ -104,5 +104,32 @@ TEST(DivergenceVerdict, SweepCellsCountDivergedRunsAndKeepTheirErrors) {
   EXPECT_GT(cell.ate_rmse_m[0], 250.0);  // 1000 m / sqrt(12)
 }
 
+// A run that covers almost nothing (two matched poses of 1401) is inconclusive: whatever its ATE, it is
+// left out of the cell's mean and counted with the failed runs, and apart as inconclusive.
+TEST(DivergenceVerdict, SweepCellsKeepInconclusiveRunsOutOfTheMeans) {
+  const Trajectory gt = SeventyMetreLine();
+  const Trajectory two_poses(gt.begin(), gt.begin() + 2);
+  const evaluation::TrajectoryEvaluation tiny =
+      evaluation::EvaluateTrajectory(gt, two_poses, evaluation::EvaluationOptions{});
+  const nlohmann::json tiny_metrics = VerdictMetrics(tiny);
+  EXPECT_EQ(tiny_metrics["status"], "inconclusive");
+  const evaluation::TrajectoryEvaluation good =
+      evaluation::EvaluateTrajectory(gt, DriftedUpward(gt, 0.1), evaluation::EvaluationOptions{});
+
+  CellResult cell;
+  AddRunMetrics(tiny_metrics, {}, &cell);
+  AddRunMetrics(VerdictMetrics(good), {}, &cell);
+  EXPECT_EQ(cell.runs, 2u);
+  EXPECT_EQ(cell.failed, 1u);
+  EXPECT_EQ(cell.inconclusive, 1u);
+  EXPECT_EQ(cell.ok(), 1u);
+  ASSERT_EQ(cell.ate_rmse_m.size(), 1u);
+  EXPECT_NEAR(cell.ate_rmse_m[0], good.ate_trans_m.rmse, 1e-12);
+  EXPECT_EQ(cell.failure_reasons.begin()->first, tiny.inconclusive_reason);
+  CellResult pooled;
+  pooled.Merge(cell);
+  EXPECT_EQ(pooled.inconclusive, 1u);
+}
+
 }  // namespace
 }  // namespace vigil::experiments

@@ -10,6 +10,7 @@
 #include "core/output.h"
 #include "experiments/external_command.h"
 #include "experiments/run_command.h"
+#include "experiments/run_metrics.h"
 #include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 
@@ -52,30 +53,6 @@ TEST(ExternalEstimator, AGoodTrajectoryIsEvaluatedLikeVigilsOwn) {
   EXPECT_TRUE(fs::is_regular_file(run / "external/output/stamped_traj_estimate.txt"));
   EXPECT_TRUE(fs::is_regular_file(run / "stamped_traj_estimate.txt"));
   EXPECT_FALSE(fs::exists(run / "external/recording"));  // a temporary folder, removed
-}
-
-TEST(ExternalEstimator, MetricsNameNoStagingPathAndNoBuiltInEstimatorState) {
-  TempDir tmp;
-  const nlohmann::json m = RunFake(tmp, "good");
-  ASSERT_EQ(m["status"], "ok") << Reason(m);
-  const nlohmann::json& external = m["external"];
-  // The command as configured; where its placeholders pointed, as paths that still hold after the run.
-  EXPECT_EQ(external["command"][2], "{output}");
-  EXPECT_EQ(external["command"][3], "{recording}");
-  EXPECT_EQ(m.dump().find(".tmp-"), std::string::npos) << external.dump();
-  EXPECT_EQ(external["placeholders"]["output"], "external/output");
-  EXPECT_TRUE(external["placeholders"]["recording"].is_null());  // temporary, removed
-  const nlohmann::json kept =
-      RunToDirectory(kPaper, ExternalOverrides("good", {"estimator.external.keep_recording=true"}),
-                     RunOptions{}, tmp.path() / "kept", false);
-  EXPECT_EQ(kept["external"]["placeholders"]["recording"], "external/recording");
-  EXPECT_EQ(kept["external"]["placeholders"]["mav0"], "external/recording/mav0");
-  // The estimator block says what vigil knows of another estimator, not vigil's own initializer's state.
-  const nlohmann::json& estimator = m["estimator"];
-  EXPECT_EQ(estimator["backend"], "external");
-  EXPECT_EQ(estimator["output_poses"], 61);
-  EXPECT_FALSE(estimator.contains("init"));
-  EXPECT_FALSE(estimator.contains("keyframes"));
 }
 
 TEST(ExternalEstimator, TheRecordingIsEurocWithTheRunsNoise) {
@@ -129,6 +106,34 @@ TEST(ExternalEstimator, PartialCoverageIsEvaluatedOnWhatItCovers) {
   EXPECT_LT(m["ate"]["trans_m"]["rmse"].get<double>(), 1e-6);
 }
 
+// Two poses of 61 frames cover almost nothing: inconclusive, not ok, whatever their ATE.
+TEST(ExternalEstimator, ATrajectoryOfTwoPosesIsInconclusive) {
+  TempDir tmp;
+  const nlohmann::json m = RunFake(tmp, "two");
+  EXPECT_EQ(m["status"], "inconclusive");
+  EXPECT_NE(Reason(m).find("coverage 3.3 % (2 of 61 ground-truth poses) is below evaluation.min_coverage"),
+            std::string::npos)
+      << Reason(m);
+}
+
+// metrics.json of an external run names what exists after the run and says which estimator ran.
+TEST(ExternalEstimator, MetricsDescribeTheExternalRun) {
+  TempDir tmp;
+  const nlohmann::json m = RunFake(tmp, "good");
+  ASSERT_EQ(m["status"], "ok") << Reason(m);
+  EXPECT_EQ(m["estimator"]["backend"], "external");
+  EXPECT_EQ(m["estimator"]["init"], "external");
+  EXPECT_TRUE(m["estimator"]["keyframes"].is_null());
+  EXPECT_TRUE(m["estimator"]["resets"].is_null());
+  EXPECT_EQ(m["estimator"]["output_poses"], 61);
+  const nlohmann::json& command = m["external"]["command"];
+  ASSERT_EQ(command.size(), 4u);
+  EXPECT_EQ(command[2], (fs::absolute(tmp.path()) / "run/external/output").lexically_normal().string());
+  EXPECT_TRUE(fs::is_directory(command[2].get<std::string>()));
+  EXPECT_NE(m["external"]["recording"].get<std::string>().find("removed after the run"), std::string::npos);
+  EXPECT_EQ(RunSummaryLine(m).find("marginalization"), std::string::npos);
+}
+
 TEST(ExternalEstimator, EurocNanoseconds) {
   TempDir tmp;
   const nlohmann::json m = RunFake(tmp, "euroc_ns",
@@ -145,6 +150,7 @@ TEST(ExternalEstimator, EveryFailureIsAFailedRunWithItsReason) {
       {"garbage", "columns, expected the TUM"},
       {"ns", "outside the recording"},
       {"unsorted", "not strictly increasing"},
+      {"scaled_q", "quaternion is not unit (norm 3)"},
       {"nan", "not a finite number"},
       {"empty", "the trajectory is empty"},
       {"none", "wrote no trajectory"},
@@ -157,6 +163,33 @@ TEST(ExternalEstimator, EveryFailureIsAFailedRunWithItsReason) {
     EXPECT_NE(Reason(m).find(expected), std::string::npos) << mode << ": " << Reason(m);
     EXPECT_TRUE(fs::is_regular_file(tmp.path() / "run/metrics.json")) << mode;
   }
+}
+
+// The trajectory is what the estimator wrote into {output}: a link out of it (to /etc/passwd, or here to a
+// good trajectory beside it) is not followed; a link to a file inside it is.
+TEST(ExternalEstimator, ATrajectoryLinkOutOfTheOutputFolderIsNotRead) {
+  TempDir tmp;
+  const nlohmann::json out = RunFake(tmp, "link_out");
+  EXPECT_EQ(out["status"], "failed");
+  EXPECT_EQ(Reason(out).rfind("external estimator: stamped_traj_estimate.txt: resolves to ", 0), 0u)
+      << Reason(out);
+  EXPECT_NE(Reason(out).find("/external/outside.txt, outside the estimator's {output} folder: not read"),
+            std::string::npos)
+      << Reason(out);
+  TempDir other;
+  const nlohmann::json in = RunFake(other, "link_in");
+  EXPECT_EQ(in["status"], "ok") << Reason(in);
+}
+
+// Seconds read as nanoseconds collapse onto a few ns: named a unit mix-up although the simulated recording
+// starts at t = 0, where every such time lies inside it.
+TEST(ExternalEstimator, SecondsReadAsNanosecondsAreAUnitMixUp) {
+  TempDir tmp;
+  const nlohmann::json m = RunFake(tmp, "good", {"estimator.external.time_unit=ns"});
+  EXPECT_EQ(m["status"], "failed");
+  EXPECT_NE(Reason(m).find("a unit mix-up? (estimator.external.time_unit ns reads them as nanoseconds)"),
+            std::string::npos)
+      << Reason(m);
 }
 
 TEST(ExternalEstimator, TimeoutKillsItAndFailsTheRun) {
@@ -192,6 +225,12 @@ TEST(ExternalEstimator, BadOptionsAreInputErrorsNamingFileLineAndKey) {
   EXPECT_EQ(e.rfind(file + ":6: estimator.external.timeout_s: ", 0), 0u) << e;
   e = error_of("    command: [" + std::string(VIGIL_FAKE_ESTIMATOR) + "]\n    trajectory: ../x.txt\n");
   EXPECT_NE(e.find("estimator.external.trajectory: "), std::string::npos) << e;
+  for (const char* folder : {".", "traj.txt/"}) {
+    e = error_of("    command: [" + std::string(VIGIL_FAKE_ESTIMATOR) + "]\n    trajectory: \"" + folder +
+                 "\"\n");
+    EXPECT_EQ(e.rfind(file + ":6: estimator.external.trajectory: '" + folder + "' names a folder", 0), 0u)
+        << e;
+  }
   e = error_of("    trajectory: x.txt\n");
   EXPECT_NE(e.find("estimator.external.command: backend external needs a command"), std::string::npos) << e;
   // --set: the override is named.

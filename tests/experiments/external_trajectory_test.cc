@@ -72,7 +72,11 @@ TEST(ExternalTrajectory, EveryBadFileIsAReasonNotACrash) {
   EXPECT_NE(failure("2 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n").find("t.txt:2: timestamps are not strictly"),
             std::string::npos);
   EXPECT_NE(failure("3 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n").find("not strictly increasing"), std::string::npos);
-  EXPECT_NE(failure("2 0 0 0 0 0 0 0\n").find("quaternion is zero"), std::string::npos);
+  EXPECT_NE(failure("2 0 0 0 0 0 0 0\n").find("t.txt:1: quaternion is not unit (norm 0"), std::string::npos);
+  // The rule of every pose reader (core/pose_checks.h): a 3x quaternion is refused, not normalized.
+  EXPECT_NE(failure("2 0 0 0 0 0 0 3\n").find("t.txt:1: quaternion is not unit (norm 3"), std::string::npos);
+  EXPECT_NE(failure("2 0 0 0 0 0 0 1.002\n").find("not unit"), std::string::npos);
+  EXPECT_EQ(failure("2 0 0 0 0 0 0 1.0005\n"), "");
   EXPECT_NE(failure("2 1e7 0 0 0 0 0 1\n").find("beyond the limit"), std::string::npos);
   // Nanoseconds where seconds are expected: far outside the recording.
   EXPECT_NE(failure("2000000000 0 0 0 0 0 0 1\n").find("outside the recording"), std::string::npos);
@@ -80,18 +84,21 @@ TEST(ExternalTrajectory, EveryBadFileIsAReasonNotACrash) {
   // Seconds where nanoseconds are expected: a few ns after the epoch, also outside.
   EXPECT_NE(failure("2.5 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds).find("outside the recording"),
             std::string::npos);
-  // Seconds where nanoseconds are expected, in a recording that starts at 0: the first rows round to the
-  // same nanosecond, which is a unit mix-up, not time going backwards.
-  const std::string seconds_as_ns =
-      ReadExternalTrajectory(tmp.File("s.txt", "0.000 0 0 0 0 0 0 1\n0.033 0 0 0 0 0 0 1\n"),
-                             TrajectoryFormat::kTum, TimeUnit::kNanoseconds, 0, kLast)
-          .failure;
-  EXPECT_NE(seconds_as_ns.find("s.txt:2: timestamps 0 and 0.033 ns are the same nanosecond: a unit mix-up?"),
-            std::string::npos)
-      << seconds_as_ns;
-  EXPECT_NE(failure("1500000000 0 0 0 0 0 0 1\n1500000000 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds)
-                .find("not strictly increasing"),
+  // Seconds read as nanoseconds on a recording that starts at 0: every time lies inside it, but the rows
+  // collapse onto one nanosecond; the hint names the unit, not the order.
+  const auto from_zero = [&](const std::string& text, TimeUnit unit) {
+    return ReadExternalTrajectory(tmp.File("z.txt", text), TrajectoryFormat::kTum, unit, 0, 20000000000)
+        .failure;
+  };
+  EXPECT_EQ(from_zero("0.000 0 0 0 0 0 0 1\n0.050 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds),
+            "z.txt:2: timestamp 0.050 lies 0 ns after the previous row's, less than 1 us: a unit mix-up? "
+            "(estimator.external.time_unit ns reads them as nanoseconds)");
+  EXPECT_NE(from_zero("0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds).find("a unit mix-up?"),
             std::string::npos);
+  EXPECT_EQ(from_zero("0.05 0 0 0 0 0 0 1\n0.05 0 0 0 0 0 0 1\n", TimeUnit::kNanoseconds)
+                .find("timestamps are not strictly increasing"),
+            std::string("z.txt:2: ").size());
+  EXPECT_EQ(from_zero("0.0 0 0 0 0 0 0 1\n0.05 0 0 0 0 0 0 1\n", TimeUnit::kSeconds), "");
   EXPECT_NE(ReadExternalTrajectory(tmp.path() / "absent.txt", TrajectoryFormat::kTum, TimeUnit::kSeconds,
                                    kFirst, kLast)
                 .failure.find("wrote no trajectory"),

@@ -2,6 +2,8 @@
 // reads the recording vigil wrote (its ground truth and camera frame times) and misbehaves as MODE says:
 //   good       the ground truth at every camera frame, TUM, seconds
 //   partial    the same for the first half of the frames only
+//   two        the same for the first two frames only
+//   scaled_q   the ground truth with every quaternion 3 times unit length
 //   euroc_ns   the ground truth at every frame, EuRoC csv, nanoseconds
 //   exit3      exits with status 3
 //   signal     kills itself with SIGKILL
@@ -11,11 +13,18 @@
 //   nan        a row with nan
 //   empty      an empty file
 //   none       writes nothing and exits 0
+//   setsid     starts a grandchild that leaves the process group and the session (setsid) and sleeps 60 s;
+//              exits 0 once the grandchild is in its own session (its pid in OUTPUT/grandchild.pid)
+//   announce   starts a grandchild in its group, writes "PID GRANDCHILD_PID\n" into the FIFO that the
+//              environment's VIGIL_TEST_ANNOUNCE names, then waits for a signal (both keep the defaults)
+//   link_out   the good trajectory in OUTPUT/../outside.txt, OUTPUT's trajectory a symbolic link to it
+//   link_in    the good trajectory in OUTPUT/real.txt, OUTPUT's trajectory a symbolic link to it
 // It writes OUTPUT/stamped_traj_estimate.txt (OUTPUT/traj.csv for euroc_ns).
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -83,6 +92,34 @@ int main(int argc, char** argv) {
     std::this_thread::sleep_for(std::chrono::seconds(60));
     return 0;
   }
+  if (mode == "setsid") {
+    int ready[2];
+    if (::pipe(ready) != 0) return 1;
+    const pid_t child = ::fork();
+    if (child == 0) {
+      ::setsid();
+      const pid_t self = ::getpid();
+      [[maybe_unused]] const ssize_t n = ::write(ready[1], &self, sizeof self);
+      std::this_thread::sleep_for(std::chrono::seconds(60));
+      return 0;
+    }
+    pid_t escaped = 0;
+    if (::read(ready[0], &escaped, sizeof escaped) != sizeof escaped) return 1;
+    std::ofstream(output / "grandchild.pid") << escaped << "\n";
+    return 0;
+  }
+  if (mode == "announce") {
+    const pid_t child = ::fork();
+    if (child == 0) {
+      ::pause();
+      return 0;
+    }
+    const char* fifo = std::getenv("VIGIL_TEST_ANNOUNCE");
+    if (fifo == nullptr) return 1;
+    std::ofstream(fifo) << ::getpid() << " " << child << "\n";
+    ::pause();
+    return 0;
+  }
   if (mode == "none") return 0;
   if (mode == "empty") {
     std::ofstream{trajectory};
@@ -97,8 +134,18 @@ int main(int argc, char** argv) {
     WriteTum(trajectory, poses, false);
   else if (mode == "ns")
     WriteTum(trajectory, poses, true);
-  else if (mode == "partial") {
+  else if (mode == "link_out" || mode == "link_in") {
+    const fs::path real = mode == "link_out" ? output.parent_path() / "outside.txt" : output / "real.txt";
+    WriteTum(real, poses, false);
+    fs::create_symlink(fs::absolute(real), trajectory);
+  } else if (mode == "partial") {
     poses.resize(poses.size() / 2);
+    WriteTum(trajectory, poses, false);
+  } else if (mode == "two") {
+    poses.resize(2);
+    WriteTum(trajectory, poses, false);
+  } else if (mode == "scaled_q") {
+    for (StampedPose& p : poses) p.q_WB.coeffs() *= 3.0;
     WriteTum(trajectory, poses, false);
   } else if (mode == "unsorted") {
     std::vector<StampedPose> reversed(poses.rbegin(), poses.rend());

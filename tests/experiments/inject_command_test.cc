@@ -78,6 +78,25 @@ TEST(InjectRecording, BadInputIsRefusedBeforeAnythingIsWritten) {
   EXPECT_NE(InputErrorOf([&] { InjectRecording(inside); }).find("the output lies inside the input"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(inside.output));
+  // Camera timing faults are the simulator's: inject refuses them instead of ignoring them.
+  InjectRequest camera = InjectRequestIn(tmp);
+  camera.overrides.push_back("faults.camera.jitter_std_s=0.01");
+  EXPECT_EQ(InputErrorOf([&] {
+              InjectRecording(camera);
+            }).rfind("--set faults.camera.jitter_std_s: inject applies IMU faults only", 0),
+            0u);
+  // --seed is read as every command reads it, and blamed as --seed.
+  for (const char* seed : {"-1", " 1", "1 ", "x", "+1"}) {
+    InjectRequest bad_seed = InjectRequestIn(tmp);
+    bad_seed.seed = seed;
+    EXPECT_EQ(InputErrorOf([&] { InjectRecording(bad_seed); }),
+              std::string("--seed: expected an integer from 0 to 9223372036854775807 (2^63 - 1), got '") +
+                  seed + "'");
+  }
+  InjectRequest empty_output = InjectRequestIn(tmp);
+  empty_output.output = "";
+  EXPECT_EQ(InputErrorOf([&] { InjectRecording(empty_output); }),
+            "-o: the output path is empty (name a directory to write)");
   EXPECT_TRUE(OnlyEntries(tmp.path(), {"rec"}));
 
   // A recording with glitches but without its clean stream: faults on top would lose it.

@@ -69,6 +69,32 @@ TEST(RunConfig, CrossKeyChecksNameTheLineOrTheSet) {
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(axes); }), axes + ":3: glitch.axes: axis az listed twice");
 }
 
+// A path under $VIGIL_DATA is read inside the folder the variable names; unset, the line or --set that used
+// it is named with the variable.
+TEST(RunConfig, VigilDataPathsNeedTheVariable) {
+  TempDir dir;
+  const std::string path =
+      dir.File("c.yaml", "seed: 1\nimu:\n  source: recording\n  recording: $VIGIL_DATA/euroc/V1_01_easy\n");
+  const std::string reason =
+      "names $VIGIL_DATA, which is not set: export VIGIL_DATA=the folder that holds your datasets "
+      "(docs/datasets.md)";
+  {
+    const vigil::testing::ScopedDataDir unset(nullptr);
+    EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path); }),
+              path + ":4: imu.recording: $VIGIL_DATA/euroc/V1_01_easy " + reason);
+    EXPECT_EQ(InputErrorOf([&] {
+                LoadRunConfig("", {"imu.source=recording", "imu.recording=$VIGIL_DATA/x"});
+              }),
+              "--set imu.recording=$VIGIL_DATA/x: imu.recording: $VIGIL_DATA/x " + reason);
+    const std::string trajectory = dir.File(
+        "t.yaml", "duration_s: 0\ntrajectory:\n  type: recording\n  recording: $VIGIL_DATA/gt.txt\n");
+    EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(trajectory); }),
+              trajectory + ":4: trajectory.recording: $VIGIL_DATA/gt.txt " + reason);
+  }
+  const vigil::testing::ScopedDataDir set("/datasets");
+  EXPECT_EQ(LoadRunConfig(path).sim.imu.recording, "/datasets/euroc/V1_01_easy");
+}
+
 TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
   TempDir dir;
   const std::string path = dir.File("c.yaml", "seed: 1\ncamera:\n  rate_hz: 20\n");
@@ -86,6 +112,56 @@ TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
   // Without a file.
   EXPECT_EQ(InputErrorOf([&] { LoadRunConfig("", {"camera.rate_hz=500"}); }),
             "--set camera.rate_hz=500: imu.rate_hz: must be at least camera.rate_hz");
+}
+
+// Every key that feeds the IMU is bounded when the config is read, naming the key: 1e308 would write IMU
+// values that no reader accepts, or overflow to inf.
+TEST(RunConfig, KeysThatFeedTheImuAreBounded) {
+  for (const char* key :
+       {"imu.noise.switch_on_accel_bias_std", "imu.noise.switch_on_gyro_bias_std",
+        "imu.noise.gyro_noise_density", "imu.noise.accel_noise_density", "imu.noise.gyro_bias_random_walk",
+        "imu.noise.accel_bias_random_walk", "imu.vibration.frequency_hz", "imu.vibration.bandwidth_hz",
+        "imu.vibration.accel_rms_mps2", "imu.vibration.gyro_rms_radps", "imu.rate_hz", "gravity_mps2",
+        "faults.saturation.accel_range_mps2", "faults.saturation.accel_range_g",
+        "faults.saturation.gyro_range_dps", "faults.quantization.accel_lsb_mps2",
+        "faults.quantization.gyro_lsb_dps", "faults.timing.jitter_std_s"}) {
+    const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=1e308"}); });
+    EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be ", 0), 0u) << error;
+  }
+  for (const char* key : {"imu.noise.initial_accel_bias", "imu.noise.initial_gyro_bias",
+                          "faults.scale.accel_scale", "faults.scale.gyro_scale",
+                          "faults.scale.accel_misalignment_deg", "faults.scale.gyro_misalignment_deg"}) {
+    const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=[0, 0, 1e308]"}); });
+    EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be ", 0), 0u) << error;
+  }
+  // Values of real sensors, and far beyond, still pass.
+  EXPECT_EQ(InputErrorOf([] {
+              LoadRunConfig("", {"imu.noise.switch_on_accel_bias_std=0.5", "imu.vibration.frequency_hz=150",
+                                 "imu.vibration.accel_rms_mps2=20", "imu.rate_hz=4000"});
+            }),
+            "");
+}
+
+// A problem found after loading is located like a cross-key check: at the --set that set its key, or the
+// file's line, never with an empty location.
+TEST(RunConfig, LaterProblemsNameTheSetOrTheLine) {
+  EXPECT_EQ(std::string(LocatedConfigError("", {"estimator.external.input=images"},
+                                           "estimator.external.input: images: no images")
+                            .what()),
+            "--set estimator.external.input=images: estimator.external.input: images: no images");
+  EXPECT_EQ(std::string(LocatedConfigError("", {}, "estimator.external.input: images: no images").what()),
+            "--set: estimator.external.input: images: no images");
+  TempDir dir;
+  const std::string path = dir.File("c.yaml", "seed: 1\nimu:\n  source: recording\n  recording: gone\n");
+  EXPECT_EQ(
+      std::string(LocatedConfigError(path, {}, "imu.recording: gone: no such file or directory").what()),
+      path + ":4: imu.recording: gone: no such file or directory");
+  RunConfig config;
+  config.sim.imu.recording = (dir.path() / "gone").string();
+  EXPECT_EQ(MissingInputProblem(config),
+            "imu.recording: " + config.sim.imu.recording + ": no such file or directory");
+  config.sim.imu.recording = dir.path().string();
+  EXPECT_EQ(MissingInputProblem(config), "");
 }
 
 }  // namespace

@@ -60,5 +60,39 @@ TEST(RunMetrics, HasEveryKeyOfFormatsMdAndReportsFailure) {
   EXPECT_TRUE(rest["estimator"]["imu_noise_at_rest"]["gyro_noise_density"].is_null());
 }
 
+// A run whose errors rest on too little of it is neither ok nor diverged, and the summary line says why; an
+// undefined alignment gives no ATE rather than an arbitrary yaw's.
+TEST(RunMetrics, InconclusiveRunsHaveTheirOwnVerdict) {
+  RunSummary summary;
+  estimator::EstimatorResult result;
+  evaluation::TrajectoryEvaluation ev;
+  ev.matched_poses = 2;
+  ev.gt_poses = 91;
+  ev.coverage = 2.0 / 91.0;
+  ev.ate_trans_m = evaluation::ComputeStatistics({0.0004, 0.0004});
+  ev.ate_rot_deg = evaluation::ComputeStatistics({0.1, 0.1});
+  ev.inconclusive_reason =
+      "coverage 2.2 % (2 of 91 ground-truth poses) is below evaluation.min_coverage 25.0 %";
+  const nlohmann::json detection = {{"detector", "none"}};
+  const nlohmann::json few = RunMetricsJson(summary, result, ev, detection);
+  EXPECT_EQ(few["status"], kInconclusive);
+  EXPECT_EQ(few["failure_reason"], ev.inconclusive_reason);
+  EXPECT_NE(RunSummaryLine(few).find("inconclusive (coverage 2.2 %"), std::string::npos)
+      << RunSummaryLine(few);
+
+  ev.coverage = 1.0;
+  ev.alignment_defined = false;
+  ev.alignment_extent_m = 0.011;
+  ev.ate_trans_m = ev.ate_rot_deg = evaluation::ErrorStatistics{};
+  ev.inconclusive_reason = "the matched ground truth spans 0.011 m";
+  const nlohmann::json still = RunMetricsJson(summary, result, ev, detection);
+  EXPECT_EQ(still["status"], kInconclusive);
+  EXPECT_EQ(still["ate"]["alignment_defined"], false);
+  const std::string line = RunSummaryLine(still);
+  EXPECT_NE(line.find(": no ATE (posyaw alignment undefined over 0.011 m, coverage 100.0 %)"),
+            std::string::npos)
+      << line;
+}
+
 }  // namespace
 }  // namespace vigil::experiments

@@ -191,6 +191,16 @@ TEST(Run, BadInputWritesNothing) {
   const std::string bad = tmp.File("bad.yaml", "seed: 1\nestimator:\n  init: magic\n");
   EXPECT_NE(InputErrorOf([&] { RunToDirectory(bad, {}, RunOptions{}, dir, false); }).find("bad.yaml:3"),
             std::string::npos);
+  // An external estimator that needs images on a simulated run: blamed on the --set that asked for them.
+  EXPECT_EQ(InputErrorOf([&] {
+              RunToDirectory(kPaper,
+                             {"estimator.backend=external", "estimator.external.command=[/bin/true]",
+                              "estimator.external.input=images"},
+                             RunOptions{}, dir, false);
+            }).rfind("--set estimator.external.input=images: estimator.external.input: images: ", 0),
+            0u);
+  EXPECT_EQ(InputErrorOf([&] { RunToDirectory(kPaper, kShort, RunOptions{}, "", false); }),
+            "-o: the output path is empty (name a directory to write)");
   RunOptions missing;
   missing.dataset_dir = tmp.path() / "no_such_dataset";
   EXPECT_NE(InputErrorOf([&] { RunToDirectory(kPaper, kShort, missing, dir, false); }), "");

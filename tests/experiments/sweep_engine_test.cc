@@ -18,6 +18,7 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "experiments/progress.h"
+#include "experiments/sweep_lock.h"
 #include "experiments/sweep_runner.h"
 #include "report/tables.h"
 #include "sim/simulator.h"
@@ -387,7 +388,9 @@ TEST(SweepRunner, ConcurrentShardsGiveTheSameResultsAsOneSweep) {
   EXPECT_EQ(ExitStatusOf(b), 0);
   // Shards write runs and sweep.yaml only: no shared results.csv, no staging left.
   for (const auto& name : Listing(out))
-    EXPECT_TRUE(name == "sweep.yaml" || name == "runs" || name.rfind("runs/", 0) == 0) << name;
+    EXPECT_TRUE(name == "sweep.yaml" || name == kSweepLockFile || name == "runs" ||
+                name.rfind("runs/", 0) == 0)
+        << name;
   EXPECT_EQ(CommittedRuns(out / "runs"), 30u);
   report::WriteSweepTables(out);
 
@@ -398,6 +401,45 @@ TEST(SweepRunner, ConcurrentShardsGiveTheSameResultsAsOneSweep) {
   RunSweep(LoadSweepSpec(sweep), one, straight, SlowFakeExecutor(0));
   for (const char* f : {"results.csv", "table2.md", "table3.csv", "table4.tex", "summary.md"})
     EXPECT_EQ(vigil::ReadFile(out / f), vigil::ReadFile(one / f)) << f;
+}
+
+// Two sweeps into one directory: while one holds the directory (here this test process, holding its lock as
+// a running sweep does), another is refused with exit status 2 and writes nothing; once it has ended, the
+// directory is free. The shards of one sweep share it. Processes and a kernel lock: no timing involved.
+TEST(SweepRunner, ASecondSweepIntoADirectoryInUseIsRefused) {
+  TempDir dir;
+  const std::string sweep = WriteSmallSweep(dir, kMethods, "[1, 2]");  // 12 runs
+  const fs::path out = dir.path() / "out";
+  {
+    const SweepDirectoryLock running(out, /*exclusive=*/true);
+    const pid_t second = StartHelper({sweep, out.string(), "0"});
+    ASSERT_GT(second, 0);
+    EXPECT_EQ(ExitStatusOf(second), 2);
+    const pid_t shard = StartHelper({sweep, out.string(), "0", "0/2"});
+    ASSERT_GT(shard, 0);
+    EXPECT_EQ(ExitStatusOf(shard), 2);
+    EXPECT_EQ(Listing(out), std::set<std::string>{kSweepLockFile});
+    EXPECT_EQ(
+        InputErrorOf([&] { RunSweep(LoadSweepSpec(sweep), out, SweepRunOptions{}, SlowFakeExecutor(0)); }),
+        out.string() + ": another vigil sweep is writing into this directory (it holds " +
+            (out / kSweepLockFile).string() +
+            "); wait until it ends, or choose another output (only the shards of one sweep may share a "
+            "directory)");
+  }
+  const pid_t after = StartHelper({sweep, out.string(), "0"});
+  ASSERT_GT(after, 0);
+  EXPECT_EQ(ExitStatusOf(after), 0);
+  EXPECT_EQ(CommittedRuns(out / "runs"), 12u);
+
+  const fs::path sharded = dir.path() / "sharded";
+  const SweepDirectoryLock other_shard(sharded, /*exclusive=*/false);
+  const pid_t whole = StartHelper({sweep, sharded.string(), "0"});
+  ASSERT_GT(whole, 0);
+  EXPECT_EQ(ExitStatusOf(whole), 2);
+  const pid_t shard = StartHelper({sweep, sharded.string(), "0", "1/2"});
+  ASSERT_GT(shard, 0);
+  EXPECT_EQ(ExitStatusOf(shard), 0);
+  EXPECT_EQ(CommittedRuns(sharded / "runs"), 6u);
 }
 
 TEST(SweepRunner, ShardsAreResumedAndCheckedAgainstTheDirectorysSweep) {

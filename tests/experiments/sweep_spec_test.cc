@@ -1,9 +1,11 @@
 #include "experiments/sweep_spec.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 #include "tests/experiments/sweep_test_util.h"
 
@@ -12,6 +14,7 @@ namespace {
 using testing::WriteSmallSweep;
 using vigil::testing::InputErrorOf;
 using vigil::testing::TempDir;
+namespace fs = std::filesystem;
 
 TEST(SweepSpec, GridIdsAndOverridesInOrder) {
   TempDir dir;
@@ -150,6 +153,50 @@ TEST(SweepSpec, ACellsCrossKeyErrorNamesTheSweepLineThatSetTheKey) {
             f + ":3: imu.rate_hz: must be at least camera.rate_hz (cell all-original)");
   EXPECT_EQ(error("methods: {original: none}\naxes:\n  camera.rate_hz: [500]\nseeds: [1]\n"),
             f + ":4: imu.rate_hz: must be at least camera.rate_hz (cell rate_hz_500-original)");
+}
+
+// The semi-real gate reads the committed excerpt, on every clone; the whole-flight sweep reads the sequence
+// under $VIGIL_DATA, and says so when the variable is unset.
+TEST(SweepSpec, ShippedSemiRealSweepsNameNoPathOutsideTheRepository) {
+  const fs::path source = fs::path(VIGIL_SOURCE_DIR).lexically_normal();
+  const SweepSpec gate = LoadSweepSpec((source / "configs/ci_semireal_sweep.yaml").string());
+  const RunConfig cell = ResolveCellConfig(gate, EnumerateCells(gate).front());
+  EXPECT_EQ(cell.sim.imu.recording, (source / "data/euroc_v1_01_excerpt").string());
+  EXPECT_TRUE(fs::is_regular_file(source / "data/euroc_v1_01_excerpt/mav0/imu0/data.csv"));
+  EXPECT_EQ(cell.sim.duration_s, 30.0);
+
+  const std::string path = (source / "configs/euroc_paper_sweep.yaml").string();
+  const SweepSpec whole = LoadSweepSpec(path);
+  const SweepCell first = EnumerateCells(whole).front();
+  {
+    const vigil::testing::ScopedDataDir unset(nullptr);
+    const std::string error = InputErrorOf([&] { ResolveCellConfig(whole, first); });
+    EXPECT_EQ(error.rfind(path + ":", 0), 0u) << error;
+    EXPECT_NE(error.find(": imu.recording: $VIGIL_DATA/euroc/V1_01_easy names $VIGIL_DATA, which is not set"),
+              std::string::npos)
+        << error;
+  }
+  const vigil::testing::ScopedDataDir set("/datasets");
+  EXPECT_EQ(ResolveCellConfig(whole, first).sim.imu.recording, "/datasets/euroc/V1_01_easy");
+}
+
+// A sweep whose recording is absent would run every cell as failed: it is refused before any run, at the
+// line that names the file (the base's, or the sweep's set).
+TEST(SweepSpec, AnAbsentInputFileIsRefusedBeforeAnyRun) {
+  TempDir dir;
+  dir.File("base.yaml", "duration_s: 3\ntrajectory:\n  type: recording\n  recording: absent_gt.csv\n");
+  const std::string p = dir.File("s.yaml", "base: base.yaml\nmethods: {original: none}\nseeds: [1]\n");
+  const std::string absent = (dir.path() / "absent_gt.csv").string();
+  EXPECT_EQ(InputErrorOf([&] { ResolveSweepPlan(LoadSweepSpec(p)); }),
+            (dir.path() / "base.yaml").string() + ":4: trajectory.recording: " + absent +
+                ": no such file or directory (cell all-original)");
+  dir.File("plain.yaml", "duration_s: 3\n");
+  const std::string q =
+      dir.File("t.yaml",
+               "base: plain.yaml\nset:\n  imu.source: recording\n  imu.recording: no_such_dir\n"
+               "methods: {original: none}\nseeds: [1]\n");
+  EXPECT_NE(InputErrorOf([&] { ResolveSweepPlan(LoadSweepSpec(q)); }).find("t.yaml:4: imu.recording: "),
+            std::string::npos);
 }
 
 TEST(SweepSpec, ShippedSweepsLoadAndResolve) {

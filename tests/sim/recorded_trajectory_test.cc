@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/format.h"
 #include "core/so3.h"
 #include "core/types.h"
 #include "sim/cumulative_bspline.h"
@@ -227,6 +228,40 @@ TEST(RecordedTrajectory, IsBuiltFromTheTrajectoryOptions) {
       0u);
 }
 
+// The sizes a config value drives are checked before anything is allocated: a knot spacing of 1 ns over a
+// second would be a billion control points (it grew to GBs before bad_alloc), and a duration beyond the
+// recording is refused before the spline is fitted.
+TEST(RecordedTrajectory, KnotCountAndDurationAreCheckedBeforeTheFit) {
+  TempDir tmp;
+  TrajectoryOptions o;
+  o.type = TrajectoryType::kRecording;
+  o.recording = tmp.File("traj.txt", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
+  o.spline.knot_spacing_s = 1e-9;
+  EXPECT_EQ(InputErrorOf([&] { MakeTrajectoryModel(o, 5.0); }),
+            "duration_s: 5 s exceeds the end of the trajectory (1 s)");
+  EXPECT_EQ(
+      InputErrorOf([&] { MakeTrajectoryModel(o, 1.0); }),
+      "trajectory.spline.knot_spacing_s: 1e-09 s over the recording's 1 s needs 1000000003 spline control "
+      "points, more than the limit of 100000; set a larger spacing, at least " +
+          FormatDouble(1.0 / 99997) + " s");
+  o.spline.knot_spacing_s = 1e-3;
+  EXPECT_EQ(MakeTrajectoryModel(o, 1.0)->EndTime(), 1.0);
+  EXPECT_EQ(SplineControlPoints(1.0, 1e-3), 1003.0);
+}
+
+// A recorded ground truth with a gap: a spline through it would invent the motion, so the gap is refused at
+// its row (the same bound as the dataset readers').
+TEST(RecordedPoses, RefusesAGapLongerThanASecond) {
+  TempDir tmp;
+  const std::string tum = tmp.File("traj.txt", "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n301 1 0 0 0 0 0 1\n");
+  EXPECT_EQ(
+      InputErrorOf([&] { ReadRecordedPoses(tum); }),
+      tum +
+          ":3: no pose for 300 s since the previous row (more than the limit of 1 s): the motion across "
+          "the gap is unknown; split the recording there");
+  EXPECT_EQ(ReadRecordedPoses(tmp.File("ok.txt", "0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n")).size(), 2u);
+}
+
 // duration_s: 0 is "to the end of the recording", resolved from the recording's timestamps; motions without
 // an end keep 0, which the validation refuses naming the key.
 TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
@@ -244,10 +279,17 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
   o.trajectory.type = TrajectoryType::kEllipse;
   ResolveDurationToEnd(&o);
   EXPECT_EQ(o.duration_s, 0.0);
-  EXPECT_EQ(InputErrorOf([&] {
-              ValidateSimOptions(o, "c.yaml");
-            }).rfind("c.yaml: duration_s: must be at least 0.5 s", 0),
-            0u);
+  EXPECT_EQ(InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
+            "c.yaml: duration_s: must be at least 0.5 s, got 0 s (0, to the end of the trajectory, needs "
+            "trajectory.type waypoints or recording)");
+  // A recording shorter than a run: 0 ran to its end, and the message says so instead of asking for the
+  // trajectory type the config already has.
+  o.trajectory.type = TrajectoryType::kRecording;
+  o.duration_s = 0.2;
+  EXPECT_EQ(
+      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
+      "c.yaml: duration_s: must be at least 0.5 s, got 0.2 s (0 runs to the end of trajectory.recording, "
+      "which is shorter than that)");
 }
 
 // The whole V1_01 ground truth (2,895 poses at 20 Hz, 145 s; roll near +-pi throughout). Measured: position

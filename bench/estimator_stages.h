@@ -1,0 +1,68 @@
+// The stages of one estimator frame, callable again and again on a fixed window: the window solve, the
+// newest pose's covariance and the oldest frame's marginalization (its prior, without sliding the window).
+// Solve() starts every time from the window's states and depths as they were when this object was made.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "estimator/estimator.h"
+
+namespace vigil::estimator {
+
+class EstimatorStages {
+ public:
+  explicit EstimatorStages(Estimator* estimator) : e_(*estimator) {
+    for (const auto& f : e_.window_) {
+      std::copy_n(f->pose, kPoseSize, poses_.emplace_back().begin());
+      std::copy_n(f->speed_bias, kSpeedBiasSize, speed_biases_.emplace_back().begin());
+    }
+    for (const auto& [id, track] : e_.features_.tracks()) depths_[id] = {track.inv_depth, track.has_depth};
+  }
+
+  int window_frames() const { return static_cast<int>(e_.window_.size()); }
+  int usable_tracks() const {
+    int n = 0;
+    for (const auto& [id, track] : e_.features_.tracks()) n += e_.features_.Usable(track);
+    return n;
+  }
+
+  // The window's solve by `backend` from the saved states; false when the solver fails.
+  bool Solve(SolverBackend backend) {
+    Restore();
+    std::string reason;
+    return backend == SolverBackend::kDense ? e_.OptimizeDense(/*marginalize_oldest_next=*/true, &reason)
+                                            : e_.Optimize(/*marginalize_oldest_next=*/true, &reason);
+  }
+  std::optional<Matrix6d> Covariance() { return e_.NewestPoseCovariance(); }
+  // The prior that marginalizing the oldest frame would keep; false when it fails.
+  bool MarginalizeOldest() {
+    const Estimator::OldestFrameTerms terms = e_.TermsOfOldest();
+    LinearPrior prior;
+    return Marginalize(e_.prior_.get(), terms.terms, terms.dropped,
+                       e_.options_.window.marginalization_eigen_threshold, &prior);
+  }
+
+ private:
+  void Restore() {
+    for (std::size_t k = 0; k < e_.window_.size(); ++k) {
+      std::copy(poses_[k].begin(), poses_[k].end(), e_.window_[k]->pose);
+      std::copy(speed_biases_[k].begin(), speed_biases_[k].end(), e_.window_[k]->speed_bias);
+    }
+    for (auto& [id, track] : e_.features_.tracks())
+      std::tie(track.inv_depth, track.has_depth) = depths_.at(id);
+  }
+
+  Estimator& e_;
+  std::vector<std::array<double, kPoseSize>> poses_;
+  std::vector<std::array<double, kSpeedBiasSize>> speed_biases_;
+  std::map<int, std::pair<double, bool>> depths_;
+};
+
+}  // namespace vigil::estimator

@@ -1,0 +1,156 @@
+#include "estimator/window_information.h"
+
+#include <utility>
+
+#include "estimator/normal_equations.h"
+#include "estimator/robust_loss.h"
+
+namespace vigil::estimator {
+namespace {
+
+constexpr int kPose = kPoseTangentSize;
+using Vector6d = Eigen::Matrix<double, kPose, 1>;
+
+}  // namespace
+
+WindowInformation::WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks)
+    : pose_blocks_(std::move(pose_blocks)), speed_bias_blocks_(std::move(speed_bias_blocks)) {
+  const int n = kFrameSize * frames();
+  H_.setZero(n, n);
+  g_.setZero(n);
+}
+
+std::vector<int> WindowInformation::BlockSizes() const {
+  std::vector<int> sizes;
+  for (int k = 0; k < frames(); ++k) sizes.insert(sizes.end(), {kPoseTangentSize, kSpeedBiasSize});
+  return sizes;
+}
+
+WindowInformation::BlockColumn WindowInformation::ColumnOf(const double* block) const {
+  for (int k = 0; k < frames(); ++k) {
+    if (pose_blocks_[k] == block) return {PoseColumn(k), kPoseTangentSize};
+    if (speed_bias_blocks_[k] == block) return {SpeedBiasColumn(k), kSpeedBiasSize};
+  }
+  return {};
+}
+
+bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                                  const std::vector<double*>& blocks) {
+  const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
+  const int rows = cost.num_residuals();
+  std::vector<BlockColumn> columns;
+  int ambient_total = 0, total = 0;
+  for (const double* block : blocks) {
+    columns.push_back(ColumnOf(block));
+    if (columns.back().column < 0) return false;
+    total += columns.back().tangent;
+  }
+  for (const int32_t size : sizes) ambient_total += size;
+  std::vector<double> jacobian_storage(static_cast<std::size_t>(rows) * ambient_total);
+  std::vector<double*> jacobians;
+  for (std::size_t k = 0, offset = 0; k < blocks.size(); ++k) {
+    jacobians.push_back(jacobian_storage.data() + offset);
+    offset += static_cast<std::size_t>(rows) * sizes[k];
+  }
+  Eigen::VectorXd r(rows);
+  if (!cost.Evaluate(blocks.data(), r.data(), jacobians.data()) || !r.allFinite()) return false;
+  RowMajorMatrix J(rows, total);
+  for (std::size_t k = 0, c = 0; k < blocks.size(); ++k) {
+    J.middleCols(c, columns[k].tangent) =
+        Eigen::Map<const RowMajorMatrix>(jacobians[k], rows, sizes[k]).leftCols(columns[k].tangent);
+    c += columns[k].tangent;
+  }
+  if (!J.allFinite()) return false;
+  Robustify(loss, r, J);
+  Accumulate(columns, J.transpose() * J, J.transpose() * r);
+  return true;
+}
+
+void WindowInformation::Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
+                                   const Eigen::VectorXd& g) {
+  for (std::size_t a = 0, ca = 0; a < columns.size(); ca += columns[a].tangent, ++a) {
+    g_.segment(columns[a].column, columns[a].tangent) += g.segment(ca, columns[a].tangent);
+    for (std::size_t b = 0, cb = 0; b < columns.size(); cb += columns[b].tangent, ++b)
+      H_.block(columns[a].column, columns[b].column, columns[a].tangent, columns[b].tangent) +=
+          H.block(ca, cb, columns[a].tangent, columns[b].tangent);
+  }
+}
+
+double WindowInformation::EliminatedDepth::Coupling(const Eigen::VectorXd& dx) const {
+  double coupling = b_d;
+  for (const auto& [column, w_p] : w) coupling += w_p.dot(dx.segment<kPose>(column));
+  return coupling;
+}
+
+bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* last,
+                                 const ceres::LossFunction* loss, double eigen_threshold,
+                                 EliminatedDepth* depth) {
+  EliminatedDepth local;
+  EliminatedDepth& d = depth ? *depth : local;
+  d.h_dd = 0.0;
+  d.b_d = 0.0;
+  d.w.clear();
+  if (first == last) return true;
+  // The depth's row of the information: its pivot h_dd, gradient b_d and coupling w to each pose the track
+  // involves (its anchor first, then one observing pose per reprojection, each a different frame).
+  double h_dd = 0.0, b_d = 0.0;
+  std::vector<std::pair<int, Vector6d>>& w = d.w;  // (pose column, d^2 cost / d pose d depth)
+  w.reserve(static_cast<std::size_t>(last - first) + 1);
+  const int anchor = ColumnOf(first->blocks[0]).column;
+  if (anchor < 0) return false;
+  w.emplace_back(anchor, Vector6d::Zero());
+  for (const Reprojection* t = first; t != last; ++t) {
+    const int observer = ColumnOf(t->blocks[1]).column;
+    if (observer < 0 || t->blocks[0] != first->blocks[0] || t->blocks[2] != first->blocks[2]) return false;
+    Eigen::Vector2d r;
+    Eigen::Matrix<double, 2, kPoseSize, Eigen::RowMajor> J_anchor, J_observer;
+    Eigen::Vector2d J_depth;
+    double* jacobians[3] = {J_anchor.data(), J_observer.data(), J_depth.data()};
+    if (!t->factor->Evaluate(t->blocks.data(), r.data(), jacobians)) return false;
+    // d r / d [anchor pose tangent, observing pose tangent, inverse depth].
+    Eigen::Matrix<double, 2, 2 * kPose + 1, Eigen::RowMajor> J;
+    J << J_anchor.leftCols<kPose>(), J_observer.leftCols<kPose>(), J_depth;
+    if (!r.allFinite() || !J.allFinite()) return false;
+    Robustify(loss, r, J);
+    const auto Ja = J.leftCols<kPose>();
+    const auto Jo = J.middleCols<kPose>(kPose);
+    const auto Jd = J.col(2 * kPose);
+    H_.block<kPose, kPose>(anchor, anchor).noalias() += Ja.transpose() * Ja;
+    H_.block<kPose, kPose>(observer, observer).noalias() += Jo.transpose() * Jo;
+    const Eigen::Matrix<double, kPose, kPose> H_ao = Ja.transpose() * Jo;
+    H_.block<kPose, kPose>(anchor, observer) += H_ao;
+    H_.block<kPose, kPose>(observer, anchor) += H_ao.transpose();
+    g_.segment<kPose>(anchor).noalias() += Ja.transpose() * r;
+    g_.segment<kPose>(observer).noalias() += Jo.transpose() * r;
+    h_dd += Jd.squaredNorm();
+    b_d += Jd.dot(r);
+    w.front().second.noalias() += Ja.transpose() * Jd;
+    w.emplace_back(observer, Jo.transpose() * Jd);
+  }
+  // The depth eliminated: H -= w w^T / h_dd, g -= w b_d / h_dd over the track's poses.
+  if (!(h_dd > eigen_threshold)) return true;
+  d.h_dd = h_dd;
+  d.b_d = b_d;
+  for (const auto& [column_p, w_p] : w) {
+    const Vector6d f = w_p / h_dd;
+    g_.segment<kPose>(column_p) -= f * b_d;
+    for (const auto& [column_q, w_q] : w)
+      H_.block<kPose, kPose>(column_p, column_q).noalias() -= f * w_q.transpose();
+  }
+  return true;
+}
+
+bool WindowInformation::AddPrior(const LinearPrior& prior) {
+  std::vector<BlockColumn> columns;
+  for (const LinearPrior::Block& b : prior.blocks) {
+    columns.push_back(ColumnOf(b.address));
+    if (columns.back().column < 0) return false;
+  }
+  Eigen::MatrixXd H;
+  Eigen::VectorXd g;
+  PriorInformationAtCurrentValues(prior, &H, &g);
+  Accumulate(columns, H, g);
+  return true;
+}
+
+}  // namespace vigil::estimator

@@ -1,0 +1,90 @@
+// The window's information: the Gauss-Newton normal equations H dx = -g of its factors at the current
+// estimate, in the tangent space of its states, with every feature's inverse depth eliminated (Schur
+// complement), in a fixed layout: frame k's pose tangent [delta p_W, delta theta_B] at column 15 k, its
+// speed-bias [v_W, b_a, b_g] at 15 k + 6.
+//
+// It holds what EliminateDropped (marginalization.h) gives for the same factors with the depths dropped, at
+// a fraction of the cost: the structure is known, so a track's reprojections are linearized in fixed sizes
+// and its depth eliminated over the poses that observe it, with no index maps and no allocation per term.
+// The pose covariance (pose_covariance.h) is its marginal.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <ceres/cost_function.h>
+#include <ceres/loss_function.h>
+#include <Eigen/Core>
+
+#include "estimator/marginalization.h"
+#include "estimator/pose_manifold.h"
+#include "estimator/reprojection_factor.h"
+
+namespace vigil::estimator {
+
+class WindowInformation {
+ public:
+  static constexpr int kFrameSize = kPoseTangentSize + kSpeedBiasSize;
+  static constexpr int PoseColumn(int frame) { return kFrameSize * frame; }
+  static constexpr int SpeedBiasColumn(int frame) { return kFrameSize * frame + kPoseTangentSize; }
+
+  // Zero equations over `frames` frames; `pose_blocks[k]` and `speed_bias_blocks[k]` are frame k's parameter
+  // blocks (kPoseSize and kSpeedBiasSize doubles), which the factors name.
+  WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks);
+
+  // Adds a factor over window blocks (each one of the frames' pose or speed-bias blocks), evaluated at their
+  // current values with `loss` (may be null) applied. False when the factor fails, a block is not the
+  // window's, or the numbers are not finite.
+  bool AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                 const std::vector<double*>& blocks);
+  // One reprojection of a track: its factor over (anchor pose, observing pose, inverse depth).
+  struct Reprojection {
+    const ReprojectionFactor* factor;
+    std::array<double*, 3> blocks;
+  };
+  // The eliminated depth's row of the information: its pivot h_dd (0 when the depth was left out), its
+  // gradient b_d and its coupling w_p to each pose p of the track, so that its Gauss-Newton step given the
+  // states' step dx is d depth = -(b_d + sum_p w_p^T dx_p) / h_dd.
+  struct EliminatedDepth {
+    double h_dd = 0.0;
+    double b_d = 0.0;
+    std::vector<std::pair<int, Eigen::Matrix<double, kPoseTangentSize, 1>>> w;  // (pose column, w_p)
+    // b_d + sum_p w_p^T dx_p.
+    double Coupling(const Eigen::VectorXd& dx) const;
+  };
+  // Adds every reprojection of one track (all over the same inverse depth, each with `loss`) and eliminates
+  // the depth: a pivot at or below `eigen_threshold` counts as no information, and the depth's rows are then
+  // left out (as marginalization.h does). `depth` (may be null) receives the depth's row. False when a
+  // factor fails, a pose is not the window's, or the numbers are not finite.
+  bool AddTrack(const Reprojection* first, const Reprojection* last, const ceres::LossFunction* loss,
+                double eigen_threshold, EliminatedDepth* depth = nullptr);
+  // Adds a linear prior at its blocks' current values (PriorInformationAtCurrentValues). False when one of
+  // its blocks is not the window's.
+  bool AddPrior(const LinearPrior& prior);
+
+  int frames() const { return static_cast<int>(pose_blocks_.size()); }
+  // The block sizes in column order: 6, 9, 6, 9, ...
+  std::vector<int> BlockSizes() const;
+  // Symmetric, both triangles filled.
+  const Eigen::MatrixXd& H() const { return H_; }
+  Eigen::MatrixXd& mutable_H() { return H_; }
+  const Eigen::VectorXd& g() const { return g_; }
+
+ private:
+  // The first column of a window block and its tangent size; column -1 when it is not the window's.
+  struct BlockColumn {
+    int column = -1;
+    int tangent = 0;
+  };
+  BlockColumn ColumnOf(const double* block) const;
+  // Adds H and g, laid out over `columns` in order (each block's tangent rows), to the window's.
+  void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
+                  const Eigen::VectorXd& g);
+
+  std::vector<double*> pose_blocks_;
+  std::vector<double*> speed_bias_blocks_;
+  Eigen::MatrixXd H_;
+  Eigen::VectorXd g_;
+};
+
+}  // namespace vigil::estimator
