@@ -8,7 +8,7 @@
 # SOURCE  an OpenVINS tarball made by `git archive` (default: ../shared/peers/open_vins-*.tar.gz beside the
 #         repository), or a git clone of OpenVINS. Its commit names the cache folder
 #         ${VIGIL_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/vigil}/openvins-<commit[0:8]>; OpenVINS is built
-#         there once (about 800 s of CPU, some 7 min at -j2 on 2 idle cores) and reused until the commit or
+#         there once (600-800 s of CPU, some 5-7 min at -j2 on 2 idle cores) and reused until the commit or
 #         the build options change; the adapter is rebuilt when its own sources change (seconds). A commit other than the pinned one builds, with a warning: the CI
 #         baseline was recorded with the pinned one.
 #   VIGIL_OPENVINS_JOBS  parallel compile jobs (default: nproc)
@@ -78,7 +78,7 @@ jobs=${VIGIL_OPENVINS_JOBS:-$(nproc)}
 # How OpenVINS is built, without ROS (the ROS 1 and ROS 2 build systems are not looked for even where they are
 # installed) and only its library (no test or ROS programs). OpenVINS's own CMakeLists.txt adds -O3 -g3 to
 # every compile; the build type's flags come after it on the command line and win: -O2 without debug info
-# (a 7 MB library instead of 294 MB; about 800 s of CPU, docs/development.md gives the times).
+# (a 7 MB library instead of 294 MB; 600-800 s of CPU, docs/development.md gives the times).
 ov_options=(-G Ninja -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -g0 -DNDEBUG"
   -DENABLE_ROS=OFF -DENABLE_ARUCO_TAGS=OFF -DCMAKE_DISABLE_FIND_PACKAGE_catkin=ON
   -DCMAKE_DISABLE_FIND_PACKAGE_ament_cmake=ON)
