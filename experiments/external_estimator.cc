@@ -88,7 +88,8 @@ std::vector<std::string> CommittedCommand(std::vector<std::string> argv, const f
 
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
                                       const std::vector<uint8_t>& flagged,
-                                      const std::vector<CameraImage>& images, const fs::path& run_dir) {
+                                      const std::vector<CameraImage>& images, const fs::path& run_dir,
+                                      const EurocImuSensor* dataset_imu_sensor) {
   const ExternalEstimatorOptions& options = config.estimator.external;
   ExternalEstimate out;
   estimator::EstimatorResult& result = out.result;
@@ -112,7 +113,7 @@ ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& da
   try {
     fs::create_directories(output_dir);
     recording = std::make_unique<RecordingDir>(run_dir, options.keep_recording);
-    WriteExternalRecording(recording->path(), config, dataset, imu, flagged, images);
+    WriteExternalRecording(recording->path(), config, dataset, imu, flagged, images, dataset_imu_sensor);
   } catch (const std::exception& e) {
     fail(std::string("cannot write the recording: ") + e.what());
     return out;

@@ -32,11 +32,13 @@ struct ExternalEstimate {
 
 // Runs config.estimator.external on `dataset` with `imu` (after detection and mitigation) as its IMU and
 // `flagged` its detector's flags (may be empty), `images` (may be empty) as its camera images; `run_dir`
-// receives the files listed above.
+// receives the files listed above. `dataset_imu_sensor`: the read dataset's own imu0/sensor.yaml, which the
+// recording then carries (null: the configuration's rate and imu.noise).
 ExternalEstimate RunExternalEstimator(const RunConfig& config, const Dataset& dataset, const ImuStream& imu,
                                       const std::vector<uint8_t>& flagged,
                                       const std::vector<CameraImage>& images,
-                                      const std::filesystem::path& run_dir);
+                                      const std::filesystem::path& run_dir,
+                                      const EurocImuSensor* dataset_imu_sensor = nullptr);
 
 // "estimator.external.input: reason" when `config` runs an external estimator that needs what its recording
 // lacks: camera images (`has_images`) or feature tracks (`has_features`); empty otherwise.

@@ -12,18 +12,24 @@ namespace fs = std::filesystem;
 
 void WriteExternalRecording(const fs::path& dir, const RunConfig& config, const Dataset& dataset,
                             const ImuStream& imu, const std::vector<uint8_t>& flagged,
-                            const std::vector<CameraImage>& images) {
+                            const std::vector<CameraImage>& images,
+                            const EurocImuSensor* dataset_imu_sensor) {
   Dataset seen;
   seen.imu = imu;
   seen.camera = dataset.camera;
   seen.groundtruth = dataset.groundtruth;
   EurocImuSensor sensor;
-  sensor.rate_hz = config.sim.imu.rate_hz;
-  const sim::ImuNoiseOptions& noise = config.sim.imu.noise;
-  sensor.gyroscope_noise_density = noise.gyro_noise_density;
-  sensor.gyroscope_random_walk = noise.gyro_bias_random_walk;
-  sensor.accelerometer_noise_density = noise.accel_noise_density;
-  sensor.accelerometer_random_walk = noise.accel_bias_random_walk;
+  if (dataset_imu_sensor) {
+    sensor = *dataset_imu_sensor;
+    sensor.T_BS = Eigen::Isometry3d::Identity();  // the IMU is the body frame in what vigil writes
+  } else {
+    sensor.rate_hz = config.sim.imu.rate_hz;
+    const sim::ImuNoiseOptions& noise = config.sim.imu.noise;
+    sensor.gyroscope_noise_density = noise.gyro_noise_density;
+    sensor.gyroscope_random_walk = noise.gyro_bias_random_walk;
+    sensor.accelerometer_noise_density = noise.accel_noise_density;
+    sensor.accelerometer_random_walk = noise.accel_bias_random_walk;
+  }
 
   std::vector<int64_t> frame_times;
   if (!images.empty()) {

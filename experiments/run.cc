@@ -38,6 +38,7 @@ struct RunData {
   double duration_s = 0.0;
   std::optional<FrontendRunResult> frontend;  // when the tracker made the feature tracks
   std::vector<CameraImage> images;            // the recording's camera images (none when simulated)
+  std::optional<EurocImuSensor> imu_sensor;   // the dataset's own mav0/imu0/sensor.yaml, when it has one
 };
 
 RunData LoadData(const RunConfig& config, const RunOptions& options) {
@@ -70,6 +71,9 @@ RunData LoadData(const RunConfig& config, const RunOptions& options) {
                      ": no features.csv and no camera images (mav0/cam0/data.csv) to track");
   data.dataset = std::move(recording.dataset);
   data.images = std::move(recording.images);
+  if (const fs::path mav0 = FindMav0(options.dataset_dir);
+      !mav0.empty() && fs::is_regular_file(mav0 / euroc_files::kImu / euroc_files::kSensor, ec))
+    data.imu_sensor = recording.imu_sensor;
   data.with_groundtruth = recording.has_groundtruth;
   data.with_glitches = fs::exists(options.dataset_dir / dataset_files::kGlitches, ec);
   data.with_clean = !data.dataset.imu_clean.empty();
@@ -145,7 +149,7 @@ nlohmann::json ExecuteRun(const RunConfig& config, const RunOptions& options,
   std::optional<ExternalEstimate> external;
   if (config.estimator.backend == EstimatorBackend::kExternal)
     external = RunExternalEstimator(config, data.dataset, detection.result.cleaned, detection.result.flagged,
-                                    data.images, dir);
+                                    data.images, dir, data.imu_sensor ? &*data.imu_sensor : nullptr);
   const estimator::EstimatorResult result =
       external
           ? std::move(external->result)

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 
 #include "core/config.h"
 #include "core/csv.h"
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/output.h"
+#include "experiments/sweep_spec.h"
 
 namespace vigil::plots {
 namespace {
@@ -123,9 +125,43 @@ RunData LoadRunDirectory(const std::filesystem::path& dir) {
   return run;
 }
 
+namespace {
+
+// The sweep's own method labels, by run id, and their order (its table_methods, then the other methods in
+// the file's order): from DIR/sweep.yaml, the
+// plan the runs were made from (empty when the directory has none, or one that no longer loads here: its
+// base configuration moved, or $VIGIL_DATA unset; the runs' own configs then name the methods).
+struct PlannedMethods {
+  std::map<std::string, std::string> by_run;
+  std::vector<std::string> order;
+};
+
+PlannedMethods PlannedMethodsOf(const std::filesystem::path& dir) {
+  PlannedMethods out;
+  const std::filesystem::path file = dir / "sweep.yaml";
+  if (!std::filesystem::is_regular_file(file)) return out;
+  experiments::SweepSpec spec;
+  try {
+    spec = experiments::LoadSweepSpec(file.string());
+  } catch (const InputError&) {
+    return out;
+  }
+  const std::vector<experiments::SweepCell> cells = experiments::EnumerateCells(spec);
+  for (const experiments::SweepRunRef& run : experiments::EnumerateRuns(spec, cells))
+    out.by_run[run.id] = spec.methods[cells[run.cell].method].label;
+  out.order = spec.table_methods;
+  for (const experiments::SweepSetting& m : spec.methods)
+    if (std::find(out.order.begin(), out.order.end(), m.label) == out.order.end())
+      out.order.push_back(m.label);
+  return out;
+}
+
+}  // namespace
+
 SweepData LoadSweepDirectory(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   SweepData sweep;
+  const PlannedMethods planned = PlannedMethodsOf(dir);
   sweep.dir = dir;
   const fs::path runs_dir = dir / "runs";
   if (!fs::is_directory(runs_dir)) throw InputError(runs_dir.string() + ": missing (not a sweep directory)");
@@ -140,7 +176,9 @@ SweepData LoadSweepDirectory(const std::filesystem::path& dir) {
   if (run_dirs.empty()) throw InputError(runs_dir.string() + ": no run directory (with config.yaml) inside");
   for (const fs::path& p : run_dirs) {
     sweep.runs.push_back(LoadRunDirectory(p));
-    const RunData& run = sweep.runs.back();
+    RunData& run = sweep.runs.back();
+    if (const auto label = planned.by_run.find(run.id); label != planned.by_run.end())
+      run.method = label->second;
     if (std::find(sweep.settings.begin(), sweep.settings.end(), run.glitch) == sweep.settings.end()) {
       sweep.settings.push_back(run.glitch);
     }
@@ -149,7 +187,12 @@ SweepData LoadSweepDirectory(const std::filesystem::path& dir) {
     }
   }
   std::sort(sweep.settings.begin(), sweep.settings.end());
-  std::sort(sweep.methods.begin(), sweep.methods.end(), MethodBefore);
+  const auto rank = [&](const std::string& m) {  // the sweep's order first, then MethodBefore's
+    return std::find(planned.order.begin(), planned.order.end(), m) - planned.order.begin();
+  };
+  std::sort(sweep.methods.begin(), sweep.methods.end(), [&](const std::string& a, const std::string& b) {
+    return rank(a) != rank(b) ? rank(a) < rank(b) : MethodBefore(a, b);
+  });
   return sweep;
 }
 

@@ -3,7 +3,10 @@
 //
 // A run is classified by its own config.yaml: the method is the detector (threshold -> "trunc", dtw -> "dtw",
 // none -> "original", others by their name) and the glitch setting is (glitch.enabled, glitch.mean,
-// glitch.std). Sweep runs are grouped by these, never by parsing run ids.
+// glitch.std). Sweep runs are grouped by these, never by parsing run ids; in a sweep directory whose
+// sweep.yaml loads, a run's method is instead the sweep's own label of it (from the plan of that file), so
+// that methods with the same detector, e.g. vigil's `trunc` and OpenVINS's `openvins_trunc`
+// (configs/estimators_glitch_study.yaml), stay apart.
 #pragma once
 
 #include <cstdint>
@@ -74,7 +77,8 @@ struct SweepData {
   std::filesystem::path dir;
   std::vector<RunData> runs;            // runs/<id>/ in id order
   std::vector<GlitchSetting> settings;  // distinct settings, sorted
-  std::vector<std::string> methods;     // distinct methods, MethodBefore order
+  std::vector<std::string>
+      methods;  // distinct methods: the sweep's table_methods, its other methods, then MethodBefore's
 };
 
 // Reads every run directory under dir/runs (entries without config.yaml, e.g. unfinished temporaries, are

@@ -189,10 +189,10 @@ std::string IntroductionSection(const std::string& sweep, std::size_t seeds,
   return s;
 }
 
-// Every claim of the paper on the sweep; `*main` receives their results.
-std::string ClaimsSection(const SeedResults& results, const evaluation::PairedTestOptions& options,
-                          std::vector<ClaimResult>* main) {
-  std::string s = "## Claims\n\n" + std::string(kClaimHeader);
+// Every claim of the paper on the sweep under the heading `title`; `*main` receives their results.
+std::string ClaimsSection(const std::string& title, const SeedResults& results,
+                          const evaluation::PairedTestOptions& options, std::vector<ClaimResult>* main) {
+  std::string s = "## " + title + "\n\n" + std::string(kClaimHeader);
   for (const ClaimSpec& c : PaperClaims()) {
     main->push_back(EvaluateClaim(c, results, options));
     s += ClaimRow(main->back(), c.id);
@@ -200,12 +200,13 @@ std::string ClaimsSection(const SeedResults& results, const evaluation::PairedTe
   return s + "\n" + FailureNote(results, {"trunc", "dtw", "original"}) + ".\n\n";
 }
 
-// Ablation 1: every claim again with vigil's variants of the methods (empty when the sweep has none).
-std::string VariantsSection(const SeedResults& results, const evaluation::PairedTestOptions& options,
-                            HoldsWith* holds_with) {
+// Ablation 1: every claim again with vigil's variants of the methods (empty when the sweep has none), under
+// the heading `title`.
+std::string VariantsSection(const std::string& title, const SeedResults& results,
+                            const evaluation::PairedTestOptions& options, HoldsWith* holds_with) {
   const auto variants = Variants(results);
   if (variants.empty()) return "";
-  std::string s = "## Ablation: vigil's variants of the same methods\n\n";
+  std::string s = "## " + title + "\n\n";
   s += "Every claim that names trunc or dtw again with vigil's variant in its place (`relative_threshold`: "
        "bound on |value - mean of the last 4 normal values|; `normalized_dtw`: slices compared after "
        "removing a robust per-channel line, replaced by the template's shape on the slice's line).\n\n";
@@ -367,7 +368,86 @@ std::string UnheldClaimsSection(const std::vector<ClaimResult>& main, const Hold
   return s;
 }
 
+// The sweep's other estimators (configs/estimators_glitch_study.yaml): every prefix P whose methods P_trunc,
+// P_dtw and P_original all exist, in name order.
+std::vector<std::string> OtherEstimators(const SeedResults& r) {
+  const std::string original = "_original";
+  std::set<std::string> prefixes;
+  for (const auto& [group, methods] : r.ate_m)
+    for (const auto& [method, values] : methods)
+      if (method.size() > original.size() &&
+          method.compare(method.size() - original.size(), original.size(), original) == 0)
+        prefixes.insert(method.substr(0, method.size() - original.size()));
+  std::vector<std::string> out;
+  for (const std::string& p : prefixes)
+    if (std::all_of(std::begin(kPaperMethods), std::end(kPaperMethods),
+                    [&](const char* m) { return HasMethod(r, p + "_" + m); }))
+      out.push_back(p);
+  return out;
+}
+
+// One table: each claim's verdict for vigil's estimator and for every other estimator.
+std::string VerdictsTable(const std::vector<ClaimResult>& main,
+                          const std::map<std::string, std::vector<ClaimResult>>& others) {
+  std::string s = "| claim | statement (A < B) | vigil's estimator |";
+  for (const auto& [prefix, claims] : others) s += " " + prefix + " |";
+  s += "\n|---|---|---|";
+  for (std::size_t i = 0; i < others.size(); ++i) s += "---|";
+  s += "\n";
+  for (std::size_t c = 0; c < main.size(); ++c) {
+    s += "| " + main[c].spec.id + " | " + main[c].spec.text + " | " +
+         evaluation::VerdictName(main[c].verdict) + " |";
+    for (const auto& [prefix, claims] : others)
+      s += std::string(" ") + evaluation::VerdictName(claims[c].verdict) + " |";
+    s += "\n";
+  }
+  return s + "\n";
+}
+
+// Every claim and vigil's variants again for each other estimator of the sweep, judged as for vigil's own
+// (empty when the sweep has none).
+std::string EstimatorsSection(const SeedResults& results, const std::vector<ClaimResult>& main,
+                              const evaluation::PairedTestOptions& options) {
+  const std::vector<std::string> prefixes = OtherEstimators(results);
+  if (prefixes.empty()) return "";
+  std::map<std::string, std::vector<ClaimResult>> others;
+  std::string details;
+  for (const std::string& p : prefixes) {
+    const SeedResults r = EstimatorResults(results, p);
+    HoldsWith unused;
+    details += ClaimsSection("Estimator `" + p + "`: claims", r, options, &others[p]);
+    details +=
+        VariantsSection("Estimator `" + p + "`: vigil's variants of the same methods", r, options, &unused);
+  }
+  std::string s = "\n## The claims per estimator\n\n";
+  s += "The sweep runs other estimators behind the same recordings, glitches and detectors: the methods "
+       "`<estimator>_<method>` (e.g. `" +
+       prefixes.front() +
+       "_trunc`). Each estimator's claims are judged as vigil's above, on its own runs, with its methods in "
+       "place of trunc, dtw and original (and of vigil's variants).\n\n";
+  return s + VerdictsTable(main, others) + details;
+}
+
 }  // namespace
+
+SeedResults EstimatorResults(const SeedResults& results, const std::string& prefix) {
+  const std::string head = prefix + "_";
+  const auto own = [&](const std::string& method) {
+    return method.size() > head.size() && method.compare(0, head.size(), head) == 0;
+  };
+  SeedResults out;
+  for (const auto& [group, methods] : results.ate_m)
+    for (const auto& [method, values] : methods)
+      if (own(method)) out.ate_m[group][method.substr(head.size())] = values;
+  for (const auto& [group, methods] : results.failed)
+    for (const auto& [method, n] : methods)
+      if (own(method)) out.failed[group][method.substr(head.size())] = n;
+  for (const auto& [method, values] : results.re_trans_m)
+    if (own(method)) out.re_trans_m[method.substr(head.size())] = values;
+  for (const auto& [method, values] : results.re_yaw_deg)
+    if (own(method)) out.re_yaw_deg[method.substr(head.size())] = values;
+  return out;
+}
 
 std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, const SeedResults& results,
                                  const std::map<std::string, SeedResults>& noise_models) {
@@ -375,10 +455,11 @@ std::string ReproductionMarkdown(const std::string& sweep, std::size_t seeds, co
   std::vector<ClaimResult> main;
   HoldsWith holds_with;
   std::string s = IntroductionSection(sweep, seeds, options);
-  s += ClaimsSection(results, options, &main);
-  s += VariantsSection(results, options, &holds_with);
+  s += ClaimsSection("Claims", results, options, &main);
+  s += VariantsSection("Ablation: vigil's variants of the same methods", results, options, &holds_with);
   s += NoiseModelSection(results, noise_models, options, &holds_with);
-  return s + UnheldClaimsSection(main, holds_with);
+  s += UnheldClaimsSection(main, holds_with);
+  return s + EstimatorsSection(results, main, options);
 }
 
 bool WriteReproduction(const fs::path& dir, const experiments::SweepSpec& spec) {

@@ -9,6 +9,9 @@
 //  - the estimator's IMU noise model: when DIR/noise_ablation/ holds a sweep whose groups are
 //    "<glitch setting>-<noise model>" (configs/paper_noise_sweep.yaml), table 2 and every claim per model,
 //    and whether a mis-set estimator reproduces the paper's collapse of original at N(50,10) (18.05 m).
+// Other estimators: when the sweep also has methods <prefix>_trunc, <prefix>_dtw and <prefix>_original (an
+// external estimator behind the same detectors), every claim and variant again for each prefix, and one table
+// of each claim's verdict per estimator.
 #pragma once
 
 #include <filesystem>
@@ -26,6 +29,10 @@ SeedResults ReadSeedResults(const std::filesystem::path& dir, const experiments:
 // Splits results whose groups are "<setting>-<label>" by label (the noise ablation): label -> results with
 // the groups renamed to "<setting>".
 std::map<std::string, SeedResults> SplitByLastGroupLabel(const SeedResults& results);
+
+// The results of another estimator of the sweep: its methods "<prefix>_<method>" renamed "<method>", every
+// other method left out (configs/estimators_glitch_study.yaml names OpenVINS's methods openvins_trunc, ...).
+SeedResults EstimatorResults(const SeedResults& results, const std::string& prefix);
 
 // Whether `results` has the paper's groups and methods.
 bool HasPaperGrid(const SeedResults& results);

@@ -71,6 +71,32 @@ TEST(ExternalEstimator, TheRecordingIsEurocWithTheRunsNoise) {
   EXPECT_TRUE(r.has_features);
 }
 
+TEST(ExternalEstimator, ADatasetRunsRecordingCarriesTheDatasetsOwnImuSensor) {
+  // A EuRoC folder whose imu0/sensor.yaml says 200 Hz and 0.0123: the kept recording of a first run, with a
+  // file for each frame's image (a dataset run with images links them into its recording).
+  TempDir tmp;
+  ASSERT_EQ(
+      RunFake(tmp, "good", {"estimator.external.keep_recording=true", "imu.noise.gyro_noise_density=0.0123"})
+          .at("status"),
+      "ok");
+  const fs::path dataset = tmp.path() / "run/external/recording";
+  fs::create_directories(dataset / "mav0/cam0/data");
+  for (const CameraImage& image : ReadRecording(dataset, false).images) WriteFileAtomic(image.path, "");
+  // The second run configures another rate and noise; the estimator is told the dataset's.
+  RunOptions from_dataset;
+  from_dataset.dataset_dir = dataset;
+  const nlohmann::json m =
+      RunToDirectory(kPaper,
+                     ExternalOverrides("good", {"estimator.external.keep_recording=true", "imu.rate_hz=400",
+                                                "imu.noise.gyro_noise_density=0.5"}),
+                     from_dataset, tmp.path() / "run2", false);
+  ASSERT_EQ(m["status"], "ok") << Reason(m);
+  const Recording r = ReadRecording(tmp.path() / "run2/external/recording", false);
+  EXPECT_EQ(r.imu_sensor.gyroscope_noise_density, 0.0123);
+  EXPECT_EQ(r.imu_sensor.rate_hz, 200.0);
+  EXPECT_EQ(r.images.size(), 61u);
+}
+
 TEST(ExternalEstimator, PartialCoverageIsEvaluatedOnWhatItCovers) {
   TempDir tmp;
   const nlohmann::json m = RunFake(tmp, "partial");

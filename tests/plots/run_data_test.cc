@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/output.h"
+#include "experiments/sweep_spec.h"
 #include "plots/figure_data.h"
 #include "plots/trajectory_alignment.h"
+#include "sim/simulator.h"
 #include "tests/core/test_util.h"
 #include "tests/plots/synthetic_runs.h"
 
@@ -30,6 +33,34 @@ TEST(RunData, SweepRunsAreGroupedByTheirOwnConfig) {
     total_failed += c.failed;
   }
   EXPECT_EQ(total_failed, 1);
+}
+
+// Two methods with the same detector (vigil's trunc and another estimator's trunc): in a sweep directory
+// whose sweep.yaml loads, each run keeps the sweep's label, and the methods follow its table_methods.
+TEST(RunData, SweepLabelsKeepMethodsWithTheSameDetectorApart) {
+  vigil::testing::TempDir tmp;
+  WriteFileAtomic(tmp.path() / "sweep.yaml",
+                  "base: " + std::string(VIGIL_SOURCE_DIR) +
+                      "/configs/paper.yaml\n"
+                      "methods:\n  trunc: threshold\n  other_trunc: {type: threshold, "
+                      "estimator.mitigation.gating.enabled: true}\n"
+                      "seeds: {count: 2, first: 1}\ntable_methods: [other_trunc, trunc]\n");
+  const experiments::SweepSpec spec = experiments::LoadSweepSpec((tmp.path() / "sweep.yaml").string());
+  const std::vector<experiments::SweepCell> cells = experiments::EnumerateCells(spec);
+  const testing::SyntheticSetting setting;
+  const experiments::RunConfig base =
+      testing::SyntheticConfig(setting, detectors::DetectorType::kThreshold, 1, 2.0);
+  const Dataset data = sim::Simulate(base.sim, base.seed);
+  for (const experiments::SweepRunRef& run : experiments::EnumerateRuns(spec, cells))
+    testing::WriteSyntheticRun(
+        tmp.path() / "runs" / run.id,
+        testing::SyntheticConfig(setting, detectors::DetectorType::kThreshold, run.seed, 2.0), data);
+  const SweepData sweep = LoadSweepDirectory(tmp.path());
+  ASSERT_EQ(sweep.runs.size(), 4u);
+  EXPECT_EQ(sweep.methods, (std::vector<std::string>{"other_trunc", "trunc"}));
+  for (const RunData& r : sweep.runs)
+    EXPECT_EQ(r.method, r.id.find("other_trunc") != std::string::npos ? "other_trunc" : "trunc") << r.id;
+  ASSERT_EQ(SummaryCellsOf(sweep).size(), 2u);
 }
 
 TEST(RunData, MethodNamesFollowThePaper) {

@@ -159,5 +159,41 @@ TEST(Reproduction, CollapseTableAndDtwExplanationQuoteThePaper) {
             std::string::npos);
 }
 
+// A sweep with a second estimator behind the same detectors (methods ext_trunc, ext_dtw, ext_original): its
+// claims are judged on its own runs, and one table gives each claim's verdict per estimator.
+TEST(Reproduction, AnotherEstimatorsClaimsAreJudgedOnItsOwnRuns) {
+  uint64_t stream = 300;
+  const evaluation::SeedValues level = Series(0.1, 0.01, 4);
+  // vigil: dtw clearly below trunc at N(50,10) (d1 holds); ext: dtw clearly above (d1 does not hold).
+  SeedResults r = Grid([&](const std::string& g, const std::string& m) {
+    return Shifted(level, g == "noise_50_10" && m == "trunc" ? 0.3 : 0.0, 0.002, ++stream);
+  });
+  for (const char* g : {"noise_0_1", "noise_1_10", "noise_50_10"})
+    for (const char* m : {"trunc", "dtw", "original"})
+      r.ate_m[g][std::string("ext_") + m] = Shifted(
+          level, std::string(g) == "noise_50_10" && std::string(m) == "dtw" ? 0.3 : 0.0, 0.002, ++stream);
+  r.failed["noise_0_1"]["ext_original"] = 1;
+  r.ate_m["noise_0_1"]["ext_hampel"] = level;     // an estimator's method beside the paper's three
+  r.ate_m["noise_0_1"]["only_original"] = level;  // a prefix without trunc and dtw is no estimator
+
+  const SeedResults ext = EstimatorResults(r, "ext");
+  EXPECT_EQ(ext.ate_m.at("noise_50_10").size(), 3u);
+  EXPECT_EQ(ext.ate_m.at("noise_0_1").count("hampel"), 1u);
+  EXPECT_EQ(ext.Failed("noise_0_1", "original"), 1u);
+  EXPECT_EQ(EvaluateClaim(Claim("d1"), r).verdict, evaluation::Verdict::kHolds);
+  EXPECT_EQ(EvaluateClaim(Claim("d1"), ext).verdict, evaluation::Verdict::kDoesNotHold);
+
+  const std::string md = ReproductionMarkdown("x.yaml", 10, r, {});
+  EXPECT_NE(md.find("| d1 | dtw beats trunc at N(50,10) (table 2) | holds | does not hold |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("## Estimator `ext`: claims\n"), std::string::npos);
+  EXPECT_EQ(md.find("Estimator `only`"), std::string::npos);
+  EXPECT_EQ(ReproductionMarkdown("x.yaml", 10,
+                                 Grid([&](const std::string&, const std::string&) { return level; }), {})
+                .find("The claims per estimator"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace vigil::report
