@@ -105,6 +105,12 @@ if [[ "$(cat "$dir/ov-build/.vigil-built" 2> /dev/null)" != "$stamp" ]]; then
   echo "$0: OpenVINS built in $((SECONDS - start)) s" >&2
 fi
 
+# The adapter's build belongs to one clone's sources: a build configured from another clone (a CI checkout,
+# a worktree) is made again from this one (seconds).
+if [[ -f "$dir/adapter-build/CMakeCache.txt" ]] &&
+  ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$here" "$dir/adapter-build/CMakeCache.txt"; then
+  rm -rf "$dir/adapter-build"
+fi
 cmake -S "$here" -B "$dir/adapter-build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DOPENVINS_SOURCE_DIR="$dir/src/open_vins" -DOPENVINS_BUILD_DIR="$dir/ov-build" > "$dir/adapter-configure.log"
 cmake --build "$dir/adapter-build" -j "$jobs" > "$dir/adapter-build.log" ||
