@@ -44,6 +44,11 @@ inline const config::EnumNames<ThresholdCalibration>& ThresholdCalibrationNames(
   return names;
 }
 
+// Largest sample window a detector keeps (mean_samples, reference_samples, half_window): 100,000 samples,
+// over 8 min at 200 Hz. The window is allocated when the detector starts, so a larger value is refused when
+// the config is read (2e9 made the allocation fail).
+inline constexpr int kMaxDetectorWindowSamples = 100000;
+
 // The paper's threshold detector ("trunc"), per axis on the measured value itself: a value above upper[axis]
 // or below lower[axis] is abnormal. Mitigation threshold: clamp to the violated bound (the paper's choice in
 // its VINS integration); mean: the mean of the axis' last n output values. Bounds: calibration clean (a run
@@ -72,7 +77,8 @@ struct ThresholdOptions {
     v.Enum("mitigation", mitigation, ThresholdMitigationNames(),
            "threshold: clamp an abnormal value to the bound it violated (the paper); mean: replace it by the "
            "mean of the axis' last mean_samples output values");
-    v.Field("mean_samples", mean_samples, "n of mitigation mean", Bounds::AtLeast(1));
+    v.Field("mean_samples", mean_samples, "n of mitigation mean",
+            Bounds::Closed(1, kMaxDetectorWindowSamples));
     v.Field("calibration_margin", calibration_margin,
             "calibration: bounds = centre of the clean range +- margin x its half-width, per axis",
             Bounds::AtLeast(1.0));
@@ -98,7 +104,8 @@ struct RelativeThresholdOptions {
             "largest normal abs(value - reference) per axis wx,wy,wz [rad/s], ax,ay,az [m/s^2] (6 numbers)",
             Bounds::Positive());
     v.Field("reference_samples", reference_samples,
-            "n: the reference is the mean of the last n normal values", Bounds::AtLeast(1));
+            "n: the reference is the mean of the last n normal values",
+            Bounds::Closed(1, kMaxDetectorWindowSamples));
     v.Enum("mitigation", mitigation, ThresholdMitigationNames(),
            "threshold: clamp to reference +- bound; mean: replace by the mean of the last n normal values");
     v.Field(
@@ -192,7 +199,7 @@ struct HampelOptions {
   void Visit(V& v) {
     using config::Bounds;
     v.Field("half_window", half_window, "h: the window is 2 h + 1 samples; latency h samples",
-            Bounds::AtLeast(1));
+            Bounds::Closed(1, kMaxDetectorWindowSamples));
     v.Field("n_sigma", n_sigma, "abnormal beyond n_sigma x 1.4826 MAD from the median", Bounds::Positive());
   }
 };

@@ -63,6 +63,10 @@ struct TrajectoryOptions {
 
 enum class LandmarkLayout { kHouse, kRandom, kHouseAndRandom };
 
+// Most random landmarks a scene holds: 100,000 (the shipped configs use 300). Each frame projects every
+// landmark, so the count is bounded when the config is read (2e9 made the allocation fail).
+inline constexpr int kMaxRandomLandmarks = 100000;
+
 struct LandmarkOptions {
   LandmarkLayout layout = LandmarkLayout::kHouse;
   int random_count = 0;          // random points on the walls of a room around the path
@@ -79,7 +83,7 @@ struct LandmarkOptions {
         "house: the 36-point house of the reference simulator; random: points on the walls of a room around "
         "the path");
     v.Field("random_count", random_count, "number of random landmarks (layouts random and house+random)",
-            config::Bounds::NonNegative());
+            config::Bounds::Closed(0, kMaxRandomLandmarks));
     v.Field("random_margin_m", random_margin_m,
             "distance of the random landmarks' walls from the path's horizontal bounding box [m]",
             config::Bounds::Positive());

@@ -142,6 +142,21 @@ TEST(RunConfig, KeysThatFeedTheImuAreBounded) {
             "");
 }
 
+// Sizes that a config value drives are bounded before anything is allocated: 2e9 random landmarks or a
+// detector window of 2e9 samples ended in std::bad_alloc (exit 1) instead of an error naming the key.
+TEST(RunConfig, SizesThatDriveAllocationsAreBounded) {
+  for (const char* key : {"landmarks.random_count", "detector.threshold.mean_samples",
+                          "detector.relative_threshold.reference_samples", "detector.hampel.half_window"}) {
+    const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=2000000000"}); });
+    EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be in [", 0), 0u) << error;
+  }
+  EXPECT_EQ(InputErrorOf([] {
+              LoadRunConfig("", {"landmarks.layout=random", "landmarks.random_count=100000",
+                                 "detector.hampel.half_window=100000"});
+            }),
+            "");
+}
+
 // A problem found after loading is located like a cross-key check: at the --set that set its key, or the
 // file's line, never with an empty location.
 TEST(RunConfig, LaterProblemsNameTheSetOrTheLine) {
