@@ -13,10 +13,10 @@
 
 #include "core/error.h"
 #include "core/staging.h"
-#include "experiments/child_process.h"
-#include "experiments/external_command.h"
+#include "experiments/external/child_process.h"
+#include "experiments/external/external_command.h"
+#include "experiments/external/external_trajectory.h"
 #include "experiments/external_recording.h"
-#include "experiments/external_trajectory.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;

@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "core/recording_files.h"
 #include "detectors/detector.h"
-#include "experiments/external_command.h"
+#include "experiments/external/external_command.h"
 #include "sim/imu_presets.h"
 
 namespace vigil::experiments {

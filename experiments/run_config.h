@@ -13,7 +13,7 @@
 #include "detectors/detector_options.h"
 #include "estimator/estimator_options.h"
 #include "evaluation/evaluation_options.h"
-#include "experiments/external_estimator_options.h"
+#include "experiments/external/external_estimator_options.h"
 #include "frontend/frontend_options.h"
 #include "sim/sim_options.h"
 

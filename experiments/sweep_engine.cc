@@ -15,7 +15,7 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "core/thread_handoff.h"
-#include "experiments/child_process.h"
+#include "experiments/external/child_process.h"
 #include "experiments/progress.h"
 #include "experiments/sweep_lock.h"
 

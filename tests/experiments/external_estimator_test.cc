@@ -8,7 +8,7 @@
 
 #include "core/euroc.h"
 #include "core/output.h"
-#include "experiments/external_command.h"
+#include "experiments/external/external_command.h"
 #include "experiments/run_command.h"
 #include "experiments/run_metrics.h"
 #include "experiments/sweep_runner.h"

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/external_estimator_options.h"
+#include "experiments/external/external_estimator_options.h"
 
 namespace vigil::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/external_command.h"
+#include "experiments/external/external_command.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/child_process.h"
+#include "experiments/external/child_process.h"
 
 #include <signal.h>
 #include <unistd.h>

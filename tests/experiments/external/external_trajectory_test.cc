@@ -1,4 +1,4 @@
-#include "experiments/external_trajectory.h"
+#include "experiments/external/external_trajectory.h"
 
 #include <gtest/gtest.h>
 

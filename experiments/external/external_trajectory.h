@@ -1,7 +1,7 @@
 // Reading the trajectory an external estimator wrote: input like any other, so it is size- and value-checked
 // and every problem becomes a reason the run failed, never a crash.
 //
-// Formats (experiments/external_estimator_options.h):
+// Formats (experiments/external/external_estimator_options.h):
 //   tum    "t x y z qx qy qz qw[ more columns]" separated by spaces or tabs ('#' comment lines allowed;
 //          OpenVINS appends covariance columns)
 //   euroc  "t,x,y,z,qw,qx,qy,qz[,more columns]" separated by commas (a '#' header line allowed)
@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/types.h"
-#include "experiments/external_estimator_options.h"
+#include "experiments/external/external_estimator_options.h"
 
 namespace vigil::experiments {
 
