@@ -5,7 +5,7 @@
 
 #include "app/commands.h"
 #include "experiments/run_command.h"
-#include "experiments/run_metrics.h"
+#include "experiments/runs/run_metrics.h"
 
 namespace vigil::app {
 

@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "core/output.h"
 #include "experiments/progress.h"
-#include "experiments/run.h"
+#include "experiments/runs/run.h"
 #include "experiments/sweep_runner.h"
 #include "report/tables.h"
 

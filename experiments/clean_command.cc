@@ -16,7 +16,7 @@
 #include "detectors/detector.h"
 #include "detectors/dtw_detector.h"
 #include "detectors/template_library.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 namespace {

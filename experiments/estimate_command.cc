@@ -11,10 +11,10 @@
 #include "core/output.h"
 #include "core/recording_files.h"
 #include "evaluation/metrics_access.h"
-#include "experiments/external_recording.h"
-#include "experiments/frontend_run.h"
-#include "experiments/run.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/external_recording.h"
+#include "experiments/runs/frontend_run.h"
+#include "experiments/runs/run.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 // `vigil estimate`: vigil's estimator alone on a recording (a EuRoC folder, or a vigil dataset), writing its
 // trajectory. It is also the first external estimator: run as `estimator.external.command` on the recording
-// a run writes (experiments/external_recording.h), it reproduces the built-in estimate of that run.
+// a run writes (experiments/runs/external_recording.h), it reproduces the built-in estimate of that run.
 //
 // The estimator's input is what `vigil run --dataset` gives it (MakeEstimatorInput): the recording's IMU,
 // feature tracks (features.csv beside mav0/; tracked from the cam0 images by the front-end when there is

@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "core/output.h"
-#include "experiments/json_document.h"
+#include "experiments/runs/json_document.h"
 
 namespace vigil::experiments {
 

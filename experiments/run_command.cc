@@ -2,7 +2,7 @@
 
 #include "core/output.h"
 #include "core/recording_files.h"
-#include "experiments/external_estimator.h"
+#include "experiments/runs/external_estimator.h"
 
 namespace vigil::experiments {
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "experiments/run.h"
+#include "experiments/runs/run.h"
 
 namespace vigil::experiments {
 

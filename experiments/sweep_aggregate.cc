@@ -11,8 +11,8 @@
 
 #include "core/output.h"
 #include "evaluation/metrics_access.h"
-#include "experiments/run_metrics.h"
-#include "experiments/run_metrics_file.h"
+#include "experiments/runs/run_metrics.h"
+#include "experiments/runs/run_metrics_file.h"
 #include "experiments/sweep_engine.h"
 
 namespace vigil::experiments {

@@ -9,9 +9,9 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "core/thread_handoff.h"
-#include "experiments/detection_stage.h"
-#include "experiments/external_estimator.h"
 #include "experiments/results_csv.h"
+#include "experiments/runs/detection_stage.h"
+#include "experiments/runs/external_estimator.h"
 #include "experiments/sweep_lock.h"
 
 namespace vigil::experiments {

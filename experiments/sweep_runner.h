@@ -29,7 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "detectors/template_library.h"
-#include "experiments/run.h"
+#include "experiments/runs/run.h"
 #include "experiments/sweep_aggregate.h"
 #include "experiments/sweep_engine.h"
 #include "experiments/sweep_shard.h"

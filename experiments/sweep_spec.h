@@ -34,7 +34,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 
@@ -104,7 +104,7 @@ std::string CellGroupLabel(const SweepSpec& spec, const SweepCell& cell);
 std::string RunId(const SweepSpec& spec, const SweepCell& cell, uint64_t seed);
 
 // Throws InputError for `message` ("key: reason") about a cell's configuration, naming the sweep-file line
-// (else the base file's line) that set a key it is about (experiments/run_config.h KeysOfConfigError).
+// (else the base file's line) that set a key it is about (experiments/runs/run_config.h KeysOfConfigError).
 [[noreturn]] void ThrowCellError(const SweepSpec& spec, const SweepCell& cell, const std::string& message);
 
 // The run configuration of a cell (seed not yet applied: the base's). InputError naming the sweep file line.

@@ -11,7 +11,7 @@
 #include "core/recording_files.h"
 #include "detectors/detector_options.h"
 #include "detectors/relative_threshold_detector.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 namespace {

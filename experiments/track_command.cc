@@ -8,10 +8,10 @@
 #include "core/format.h"
 #include "core/output.h"
 #include "core/recording_files.h"
-#include "experiments/frontend_metrics.h"
-#include "experiments/frontend_run.h"
-#include "experiments/frontend_stage.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/frontend_metrics.h"
+#include "experiments/runs/frontend_run.h"
+#include "experiments/runs/frontend_stage.h"
+#include "experiments/runs/run_config.h"
 #include "frontend/frontend_options.h"
 
 namespace vigil::experiments {

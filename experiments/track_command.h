@@ -28,7 +28,7 @@ struct TrackResult {
 // value, no camera images). Then writes into `output` (staged, refused over the dataset, and when not empty
 // unless `force`):
 //   features.csv    the published frames' feature tracks
-//   frontend.json   the tracker's statistics (experiments/frontend_metrics.h), the dataset, the time per
+//   frontend.json   the tracker's statistics (experiments/runs/frontend_metrics.h), the dataset, the time per
 //                   image, and the reprojection errors when the dataset has ground truth and a scene.obj
 //   config.yaml     the front-end options applied (under "frontend:", as in a run config)
 TrackResult TrackToDirectory(const TrackRequest& request);

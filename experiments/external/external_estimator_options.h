@@ -2,8 +2,8 @@
 // program is run and read.
 //
 // An external estimator is a command run once per run on a recording vigil writes in the EuRoC ASL layout
-// (experiments/external_recording.h). Its arguments may hold placeholders that vigil replaces before running
-// it (experiments/external/external_command.h):
+// (experiments/runs/external_recording.h). Its arguments may hold placeholders that vigil replaces before
+// running it (experiments/external/external_command.h):
 //   {recording}  the recording's folder (holding mav0/, features.csv and config.yaml)
 //   {mav0}       its mav0/ folder
 //   {output}     an empty folder for the program's output, also its working directory

@@ -11,7 +11,7 @@
 
 #include "core/output.h"
 #include "core/random.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 

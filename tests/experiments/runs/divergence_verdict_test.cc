@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "evaluation/evaluate_trajectory.h"
-#include "experiments/run_metrics.h"
+#include "experiments/runs/run_metrics.h"
 #include "experiments/sweep_aggregate.h"
 
 namespace vigil::experiments {

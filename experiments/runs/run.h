@@ -8,7 +8,7 @@
 #include "core/dataset.h"
 #include "detectors/template_library.h"
 #include "estimator/estimator_input.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/run_metrics_file.h"
+#include "experiments/runs/run_metrics_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The external path of a run (estimator.backend: external), driven by a fake estimator executable
 // (fake_estimator.cc) that succeeds or fails in one way per mode.
-#include "experiments/external_estimator.h"
+#include "experiments/runs/external_estimator.h"
 
 #include <chrono>
 
@@ -10,7 +10,7 @@
 #include "core/output.h"
 #include "experiments/external/external_command.h"
 #include "experiments/run_command.h"
-#include "experiments/run_metrics.h"
+#include "experiments/runs/run_metrics.h"
 #include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"
 

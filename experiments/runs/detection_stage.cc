@@ -1,4 +1,4 @@
-#include "experiments/detection_stage.h"
+#include "experiments/runs/detection_stage.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 #include <fstream>
 

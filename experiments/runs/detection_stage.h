@@ -24,7 +24,7 @@
 #include "detectors/detector.h"
 #include "detectors/template_library.h"
 #include "detectors/threshold_detector.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 

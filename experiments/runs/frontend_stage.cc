@@ -1,4 +1,4 @@
-#include "experiments/frontend_stage.h"
+#include "experiments/runs/frontend_stage.h"
 
 #include <chrono>
 #include <stdexcept>

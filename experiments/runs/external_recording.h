@@ -19,7 +19,7 @@
 
 #include "core/dataset.h"
 #include "core/euroc.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/run_inputs.h"
+#include "experiments/runs/run_inputs.h"
 
 #include <utility>
 

@@ -18,12 +18,12 @@
 #include "core/dataset.h"
 #include "core/euroc.h"
 #include "core/mesh.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 
 struct FrontendRunResult {
-  nlohmann::json metrics;  // the "frontend" object (experiments/frontend_metrics.h)
+  nlohmann::json metrics;  // the "frontend" object (experiments/runs/frontend_metrics.h)
   double track_s = 0.0;    // wall time of rendering (simulated runs) and tracking
 };
 

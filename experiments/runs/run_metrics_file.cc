@@ -1,10 +1,10 @@
-#include "experiments/run_metrics_file.h"
+#include "experiments/runs/run_metrics_file.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include "core/output.h"
-#include "experiments/json_document.h"
+#include "experiments/runs/json_document.h"
 
 namespace vigil::experiments {
 namespace {

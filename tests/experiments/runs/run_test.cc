@@ -5,7 +5,7 @@
 #include "core/dataset.h"
 #include "core/output.h"
 #include "evaluation/evaluate_trajectory.h"
-#include "experiments/imu_axis_record.h"
+#include "experiments/runs/imu_axis_record.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
 

@@ -1,4 +1,4 @@
-#include "experiments/json_document.h"
+#include "experiments/runs/json_document.h"
 
 #include <algorithm>
 #include <cctype>

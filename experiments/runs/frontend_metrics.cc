@@ -1,4 +1,4 @@
-#include "experiments/frontend_metrics.h"
+#include "experiments/runs/frontend_metrics.h"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "experiments/run_metrics.h"
+#include "experiments/runs/run_metrics.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,11 +1,11 @@
-#include "experiments/frontend_run.h"
+#include "experiments/runs/frontend_run.h"
 
 #include <chrono>
 #include <memory>
 
 #include "core/error.h"
-#include "experiments/frontend_metrics.h"
-#include "experiments/frontend_stage.h"
+#include "experiments/runs/frontend_metrics.h"
+#include "experiments/runs/frontend_stage.h"
 #include "sim/image_renderer.h"
 #include "sim/scene.h"
 #include "sim/simulator.h"

@@ -1,4 +1,4 @@
-#include "experiments/run.h"
+#include "experiments/runs/run.h"
 
 #include <chrono>
 #include <exception>
@@ -12,12 +12,12 @@
 #include "core/output.h"
 #include "estimator/run_estimator.h"
 #include "evaluation/evaluate_trajectory.h"
-#include "experiments/detection_stage.h"
-#include "experiments/external_estimator.h"
-#include "experiments/frontend_run.h"
-#include "experiments/imu_axis_record.h"
-#include "experiments/run_inputs.h"
-#include "experiments/run_metrics.h"
+#include "experiments/runs/detection_stage.h"
+#include "experiments/runs/external_estimator.h"
+#include "experiments/runs/frontend_run.h"
+#include "experiments/runs/imu_axis_record.h"
+#include "experiments/runs/run_inputs.h"
+#include "experiments/runs/run_metrics.h"
 #include "sim/simulator.h"
 
 namespace vigil::experiments {

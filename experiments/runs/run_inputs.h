@@ -4,7 +4,7 @@
 #include "core/dataset.h"
 #include "core/types.h"
 #include "estimator/estimator_input.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/external_recording.h"
+#include "experiments/runs/external_recording.h"
 
 #include <stdexcept>
 #include "core/config.h"

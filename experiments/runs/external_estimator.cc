@@ -1,4 +1,4 @@
-#include "experiments/external_estimator.h"
+#include "experiments/runs/external_estimator.h"
 
 #include <stdlib.h>
 
@@ -16,7 +16,7 @@
 #include "experiments/external/child_process.h"
 #include "experiments/external/external_command.h"
 #include "experiments/external/external_trajectory.h"
-#include "experiments/external_recording.h"
+#include "experiments/runs/external_recording.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;

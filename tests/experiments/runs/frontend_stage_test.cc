@@ -1,11 +1,11 @@
-#include "experiments/frontend_stage.h"
+#include "experiments/runs/frontend_stage.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "experiments/frontend_metrics.h"
+#include "experiments/runs/frontend_metrics.h"
 #include "tests/core/test_util.h"
 #include "tests/frontend/synthetic_images.h"
 

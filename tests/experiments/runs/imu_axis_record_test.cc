@@ -1,5 +1,5 @@
 // imu_axis.csv: what a run records for its IMU figures, written and read back exactly; bad files rejected.
-#include "experiments/imu_axis_record.h"
+#include "experiments/runs/imu_axis_record.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "experiments/imu_axis_record.h"
+#include "experiments/runs/imu_axis_record.h"
 
 #include <fstream>
 #include <stdexcept>
