@@ -1,4 +1,4 @@
-#include "experiments/slurm_job.h"
+#include "experiments/slurm/slurm_job.h"
 
 #include <gtest/gtest.h>
 

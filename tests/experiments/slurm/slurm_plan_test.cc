@@ -1,4 +1,4 @@
-#include "experiments/slurm_plan.h"
+#include "experiments/slurm/slurm_plan.h"
 
 #include <sys/stat.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/slurm_job.h"
+#include "experiments/slurm/slurm_job.h"
 
 #include <algorithm>
 #include <cctype>
@@ -133,7 +133,7 @@ SlurmScripts MakeSlurmScripts(const SlurmJobOptions& o) {
       " tasks, task I running shard I of the sweep in\n"
       "# " +
       o.dir.string() +
-      " (see experiments/slurm_job.h). Submit with submit.sh beside this file;\n"
+      " (see experiments/slurm/slurm_job.h). Submit with submit.sh beside this file;\n"
       "# resubmit one task with `sbatch --array=I array.sbatch`: it resumes its shard.\n" +
       common(o.job_name, cpus) + "#SBATCH --array=0-" + std::to_string(o.tasks - 1) +
       "\n#SBATCH --output=" + logs +

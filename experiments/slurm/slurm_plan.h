@@ -1,6 +1,6 @@
 // `vigil slurm` without the process: a sweep (or the paper's) planned as a Slurm job array of shards plus a
-// finalize job (experiments/slurm_job.h), written into DIR/slurm/, and submitted through sbatch as a separate
-// step.
+// finalize job (experiments/slurm/slurm_job.h), written into DIR/slurm/, and submitted through sbatch as a
+// separate step.
 #pragma once
 
 #include <cstddef>
@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "experiments/slurm_job.h"
+#include "experiments/slurm/slurm_job.h"
 
 namespace vigil::experiments {
 
