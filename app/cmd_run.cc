@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "experiments/run_command.h"
+#include "experiments/commands/run_command.h"
 #include "experiments/runs/run_metrics.h"
 
 namespace vigil::app {

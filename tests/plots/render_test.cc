@@ -10,7 +10,7 @@
 #include "core/euroc.h"
 #include "core/output.h"
 #include "detectors/detector.h"
-#include "experiments/run_command.h"
+#include "experiments/commands/run_command.h"
 #include "experiments/runs/detection_stage.h"
 #include "experiments/runs/imu_axis_record.h"
 #include "plots/image.h"

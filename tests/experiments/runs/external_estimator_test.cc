@@ -8,8 +8,8 @@
 
 #include "core/euroc.h"
 #include "core/output.h"
+#include "experiments/commands/run_command.h"
 #include "experiments/external/external_command.h"
-#include "experiments/run_command.h"
 #include "experiments/runs/run_metrics.h"
 #include "experiments/sweep_runner.h"
 #include "tests/core/test_util.h"

@@ -1,4 +1,4 @@
-#include "experiments/run_command.h"
+#include "experiments/commands/run_command.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "experiments/estimate_command.h"
+#include "experiments/commands/estimate_command.h"
 
 #include <chrono>
 #include <system_error>

@@ -1,4 +1,4 @@
-#include "experiments/track_command.h"
+#include "experiments/commands/track_command.h"
 
 #include <filesystem>
 
@@ -8,7 +8,7 @@
 #include "core/output.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/command_test_util.h"
+#include "tests/experiments/commands/command_test_util.h"
 
 namespace vigil::experiments {
 namespace {

@@ -1,4 +1,4 @@
-#include "experiments/inject_command.h"
+#include "experiments/commands/inject_command.h"
 
 #include <filesystem>
 #include <map>

@@ -1,4 +1,4 @@
-#include "experiments/clean_command.h"
+#include "experiments/commands/clean_command.h"
 
 #include <filesystem>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "experiments/templates_command.h"
+#include "experiments/commands/templates_command.h"
 
 #include <filesystem>
 
@@ -7,7 +7,7 @@
 #include "core/output.h"
 #include "detectors/template_library.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/command_test_util.h"
+#include "tests/experiments/commands/command_test_util.h"
 
 namespace vigil::experiments {
 namespace {

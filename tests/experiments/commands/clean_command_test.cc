@@ -1,4 +1,4 @@
-#include "experiments/clean_command.h"
+#include "experiments/commands/clean_command.h"
 
 #include <filesystem>
 
@@ -8,7 +8,7 @@
 #include "core/dataset.h"
 #include "core/output.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/command_test_util.h"
+#include "tests/experiments/commands/command_test_util.h"
 
 namespace vigil::experiments {
 namespace {

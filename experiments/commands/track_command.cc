@@ -1,4 +1,4 @@
-#include "experiments/track_command.h"
+#include "experiments/commands/track_command.h"
 
 #include <filesystem>
 

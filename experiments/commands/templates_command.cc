@@ -1,4 +1,4 @@
-#include "experiments/templates_command.h"
+#include "experiments/commands/templates_command.h"
 
 #include <filesystem>
 #include <sstream>
