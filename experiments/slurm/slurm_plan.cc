@@ -14,9 +14,9 @@
 
 #include "core/error.h"
 #include "core/output.h"
-#include "experiments/sweep_engine.h"
-#include "experiments/sweep_runner.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_engine.h"
+#include "experiments/sweeps/sweep_runner.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::experiments {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "evaluation/evaluate_trajectory.h"
 #include "experiments/runs/run_metrics.h"
-#include "experiments/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_aggregate.h"
 
 namespace vigil::experiments {
 namespace {

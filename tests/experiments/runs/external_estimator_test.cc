@@ -11,7 +11,7 @@
 #include "experiments/commands/run_command.h"
 #include "experiments/external/external_command.h"
 #include "experiments/runs/run_metrics.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "tests/core/test_util.h"
 
 namespace vigil::experiments {

@@ -9,7 +9,7 @@
 
 #include "core/output.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 namespace vigil::experiments {
 namespace {

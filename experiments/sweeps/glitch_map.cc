@@ -1,4 +1,4 @@
-#include "experiments/glitch_map.h"
+#include "experiments/sweeps/glitch_map.h"
 
 #include <cmath>
 #include <limits>
@@ -7,8 +7,8 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "evaluation/metrics_access.h"
-#include "experiments/sweep_aggregate.h"
-#include "experiments/sweep_engine.h"
+#include "experiments/sweeps/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_engine.h"
 
 namespace vigil::experiments {
 namespace {

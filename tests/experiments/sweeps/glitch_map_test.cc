@@ -1,12 +1,12 @@
 // Glitch maps and detector ROC read back from a sweep directory's metrics.json files (nothing re-run), and
 // sweep methods that set estimator keys.
-#include "experiments/glitch_map.h"
+#include "experiments/sweeps/glitch_map.h"
 
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "experiments/detection_roc.h"
+#include "experiments/sweeps/detection_roc.h"
 #include "tests/core/test_util.h"
 
 namespace vigil::experiments {

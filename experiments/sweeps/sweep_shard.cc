@@ -1,4 +1,4 @@
-#include "experiments/sweep_shard.h"
+#include "experiments/sweeps/sweep_shard.h"
 
 #include <algorithm>
 

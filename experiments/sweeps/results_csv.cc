@@ -1,4 +1,4 @@
-#include "experiments/results_csv.h"
+#include "experiments/sweeps/results_csv.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "experiments/regression.h"
+#include "experiments/sweeps/regression.h"
 
 #include <cmath>
 #include <cstdio>

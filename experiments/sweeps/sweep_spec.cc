@@ -1,4 +1,4 @@
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::experiments {
 

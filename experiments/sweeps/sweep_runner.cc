@@ -1,4 +1,4 @@
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/sweep_runner.h"
 
 #include <memory>
 
@@ -9,10 +9,10 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "core/thread_handoff.h"
-#include "experiments/results_csv.h"
 #include "experiments/runs/detection_stage.h"
 #include "experiments/runs/external_estimator.h"
-#include "experiments/sweep_lock.h"
+#include "experiments/sweeps/results_csv.h"
+#include "experiments/sweeps/sweep_lock.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;

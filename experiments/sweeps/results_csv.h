@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::experiments {
 

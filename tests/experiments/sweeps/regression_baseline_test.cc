@@ -1,4 +1,4 @@
-#include "experiments/regression_baseline.h"
+#include "experiments/sweeps/regression_baseline.h"
 
 #include <gtest/gtest.h>
 

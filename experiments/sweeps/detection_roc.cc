@@ -1,4 +1,4 @@
-#include "experiments/detection_roc.h"
+#include "experiments/sweeps/detection_roc.h"
 
 #include <cctype>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "core/format.h"
 #include "core/output.h"
 #include "evaluation/metrics_access.h"
-#include "experiments/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_aggregate.h"
 
 namespace vigil::experiments {
 namespace {

@@ -1,4 +1,4 @@
-#include "experiments/sweep_engine.h"
+#include "experiments/sweeps/sweep_engine.h"
 
 #include <signal.h>
 #include <spawn.h>
@@ -17,13 +17,13 @@
 
 #include "core/output.h"
 #include "core/staging.h"
-#include "experiments/progress.h"
-#include "experiments/sweep_lock.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/progress.h"
+#include "experiments/sweeps/sweep_lock.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "report/tables.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 extern char** environ;
 
@@ -245,7 +245,7 @@ TEST(Progress, BarWritesToItsStreamOnlyWhenEnabled) {
 
 constexpr const char* kMethods = "  trunc: threshold\n  original: none\n  hampel: hampel\n";
 
-// Starts the sweep helper executable (tests/experiments/sweep_helper.cc) with `args`.
+// Starts the sweep helper executable (tests/experiments/sweeps/sweep_helper.cc) with `args`.
 pid_t StartHelper(const std::vector<std::string>& args) {
   std::vector<std::string> words = {VIGIL_SWEEP_HELPER};
   words.insert(words.end(), args.begin(), args.end());

@@ -1,4 +1,4 @@
-#include "experiments/progress.h"
+#include "experiments/sweeps/progress.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "experiments/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_aggregate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "evaluation/metrics_access.h"
 #include "experiments/runs/run_metrics.h"
 #include "experiments/runs/run_metrics_file.h"
-#include "experiments/sweep_engine.h"
+#include "experiments/sweeps/sweep_engine.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;

@@ -1,9 +1,9 @@
-#include "experiments/sweep_shard.h"
+#include "experiments/sweeps/sweep_shard.h"
 
 #include <gtest/gtest.h>
 
 #include "tests/core/test_util.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 namespace vigil::experiments {
 namespace {

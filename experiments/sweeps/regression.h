@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "experiments/regression_baseline.h"
-#include "experiments/sweep_aggregate.h"
+#include "experiments/sweeps/regression_baseline.h"
+#include "experiments/sweeps/sweep_aggregate.h"
 
 namespace vigil::experiments {
 

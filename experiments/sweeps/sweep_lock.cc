@@ -1,4 +1,4 @@
-#include "experiments/sweep_lock.h"
+#include "experiments/sweeps/sweep_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

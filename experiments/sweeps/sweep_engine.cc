@@ -1,4 +1,4 @@
-#include "experiments/sweep_engine.h"
+#include "experiments/sweeps/sweep_engine.h"
 
 #include <unistd.h>
 
@@ -16,8 +16,8 @@
 #include "core/staging.h"
 #include "core/thread_handoff.h"
 #include "experiments/external/child_process.h"
-#include "experiments/progress.h"
-#include "experiments/sweep_lock.h"
+#include "experiments/sweeps/progress.h"
+#include "experiments/sweeps/sweep_lock.h"
 
 namespace vigil::experiments {
 namespace fs = std::filesystem;
@@ -154,8 +154,8 @@ namespace {
 
 // Whether `dir` holds anything besides sweep.yaml being staged: a shard that starts beside another sees the
 // other's sweep.yaml staging for an instant before it is linked into place (CommitSweepFile), and that
-// directory is still a new sweep, not a user's directory. The sweep's lock file (experiments/sweep_lock.h)
-// does not count either: it is taken before the directory is prepared.
+// directory is still a new sweep, not a user's directory. The sweep's lock file
+// (experiments/sweeps/sweep_lock.h) does not count either: it is taken before the directory is prepared.
 bool HasEntriesBesidesSweepFileStaging(const fs::path& dir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {

@@ -12,7 +12,7 @@
 #include "core/output.h"
 #include "core/random.h"
 #include "experiments/runs/run_config.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "tests/core/test_util.h"
 
 namespace vigil::experiments::testing {

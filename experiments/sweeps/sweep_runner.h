@@ -6,12 +6,12 @@
 // directory rules (core/output.h, PrepareSweepDirectory) and the DTW template builds are checked first, so a
 // sweep refused for bad input leaves no file behind.
 //
-// Shards (experiments/sweep_shard.h): with a shard other than the whole sweep, only that shard's runs are
-// executed, and nothing but run directories is written besides DIR/sweep.yaml (created by the first shard,
-// atomically; every other one checks that its sweep is the same): no results.csv, timing.csv or tables,
-// which `vigil tables DIR` writes once every shard is done. Shards may run at the same time, on several
-// machines sharing the directory. A shard whose runs are already there needs `resume` (finished runs kept);
-// `force` would remove the other shards' runs and is refused.
+// Shards (experiments/sweeps/sweep_shard.h): with a shard other than the whole sweep, only that shard's runs
+// are executed, and nothing but run directories is written besides DIR/sweep.yaml (created by the first
+// shard, atomically; every other one checks that its sweep is the same): no results.csv, timing.csv or
+// tables, which `vigil tables DIR` writes once every shard is done. Shards may run at the same time, on
+// several machines sharing the directory. A shard whose runs are already there needs `resume` (finished runs
+// kept); `force` would remove the other shards' runs and is refused.
 //
 // DTW templates: for every cell whose method is `dtw` without a templates_file, a library is built from a
 // glitch-free simulation of that cell's scenario with seed spec.template_seed (never a run seed) and shared
@@ -30,10 +30,10 @@
 
 #include "detectors/template_library.h"
 #include "experiments/runs/run.h"
-#include "experiments/sweep_aggregate.h"
-#include "experiments/sweep_engine.h"
-#include "experiments/sweep_shard.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_engine.h"
+#include "experiments/sweeps/sweep_shard.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::experiments {
 

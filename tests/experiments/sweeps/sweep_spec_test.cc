@@ -1,13 +1,13 @@
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 #include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 namespace vigil::experiments {
 namespace {

@@ -24,8 +24,8 @@
 #include <thread>
 
 #include "core/error.h"
-#include "experiments/sweep_runner.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "experiments/sweeps/sweep_runner.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 namespace {
 namespace fs = std::filesystem;
