@@ -7,7 +7,7 @@
 #include "app/set_args.h"
 #include "core/config.h"
 #include "detectors/detector_options.h"
-#include "experiments/clean_command.h"
+#include "experiments/commands/clean_command.h"
 
 namespace vigil::app {
 

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::app {
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "experiments/estimate_command.h"
+#include "experiments/commands/estimate_command.h"
 
 namespace vigil::app {
 

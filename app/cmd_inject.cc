@@ -1,11 +1,11 @@
 // `vigil inject`: the simulator's IMU faults (glitch.*, faults.*) applied to a recording's IMU, written as a
-// copy of the recording with labels (experiments/inject_command.h).
+// copy of the recording with labels (experiments/commands/inject_command.h).
 #include <cstdio>
 #include <memory>
 
 #include "app/commands.h"
 #include "app/set_args.h"
-#include "experiments/inject_command.h"
+#include "experiments/commands/inject_command.h"
 
 namespace vigil::app {
 

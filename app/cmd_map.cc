@@ -1,6 +1,6 @@
 // `vigil map`: a glitch-sweep map (configs/glitch_map.yaml, configs/rescue_map.yaml): the two-axis sweep,
-// then map.md (ATE relative to the glitch-free ATE per method and cell, experiments/glitch_map.h) from what
-// the runs recorded.
+// then map.md (ATE relative to the glitch-free ATE per method and cell, experiments/sweeps/glitch_map.h) from
+// what the runs recorded.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -9,7 +9,7 @@
 #include "app/sweep_args.h"
 #include "core/format.h"
 #include "core/output.h"
-#include "experiments/glitch_map.h"
+#include "experiments/sweeps/glitch_map.h"
 #include "plots/glitch_map_figure.h"
 
 namespace vigil::app {

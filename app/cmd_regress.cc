@@ -8,8 +8,8 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/output.h"
-#include "experiments/regression.h"
-#include "experiments/sweep_aggregate.h"
+#include "experiments/sweeps/regression.h"
+#include "experiments/sweeps/sweep_aggregate.h"
 
 namespace vigil::app {
 namespace {

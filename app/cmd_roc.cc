@@ -1,6 +1,6 @@
 // `vigil roc`: a detector ROC (configs/roc_paper.yaml, configs/roc_rescue.yaml): the sweep of (detector,
 // threshold) methods, then roc.md and figures/roc.png from what the runs recorded
-// (experiments/detection_roc.h).
+// (experiments/sweeps/detection_roc.h).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -8,7 +8,7 @@
 #include "app/commands.h"
 #include "app/sweep_args.h"
 #include "core/output.h"
-#include "experiments/detection_roc.h"
+#include "experiments/sweeps/detection_roc.h"
 #include "plots/roc_figure.h"
 
 namespace vigil::app {

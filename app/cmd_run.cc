@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "experiments/run_command.h"
-#include "experiments/run_metrics.h"
+#include "experiments/commands/run_command.h"
+#include "experiments/runs/run_metrics.h"
 
 namespace vigil::app {
 

@@ -6,7 +6,7 @@
 
 #include "app/commands.h"
 #include "core/output.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/simulator.h"
 
 namespace vigil::app {

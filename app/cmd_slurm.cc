@@ -1,5 +1,6 @@
 // `vigil slurm`: a sweep (or the paper's) as a Slurm job array of shards plus a finalize job; with --submit,
-// submitted through sbatch. See experiments/slurm_plan.h and experiments/slurm_job.h for the scripts.
+// submitted through sbatch. See experiments/slurm/slurm_plan.h and experiments/slurm/slurm_job.h for the
+// scripts.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -7,7 +8,7 @@
 
 #include "app/commands.h"
 #include "app/config_dir.h"
-#include "experiments/slurm_plan.h"
+#include "experiments/slurm/slurm_plan.h"
 
 namespace vigil::app {
 namespace fs = std::filesystem;

@@ -9,7 +9,7 @@ namespace vigil::app {
 void AddSweepCommand(CLI::App& root) {
   auto* cmd =
       root.add_subcommand("sweep",
-                          "run a Monte Carlo sweep (see experiments/sweep_spec.h for the file) into a "
+                          "run a Monte Carlo sweep (see experiments/sweeps/sweep_spec.h for the file) into a "
                           "directory: runs/<id>/, results.csv, tables 2-4, summary.md");
   struct Args {
     std::string sweep;

@@ -5,7 +5,7 @@
 
 #include "app/commands.h"
 #include "app/set_args.h"
-#include "experiments/templates_command.h"
+#include "experiments/commands/templates_command.h"
 
 namespace vigil::app {
 

@@ -5,7 +5,7 @@
 
 #include "app/commands.h"
 #include "app/set_args.h"
-#include "experiments/track_command.h"
+#include "experiments/commands/track_command.h"
 
 namespace vigil::app {
 

@@ -9,7 +9,7 @@
 #include "app/solver_logging.h"
 #include "core/config.h"
 #include "core/error.h"
-#include "experiments/child_process.h"
+#include "experiments/external/child_process.h"
 
 namespace vigil::app {
 namespace {

@@ -6,9 +6,9 @@
 
 #include "core/error.h"
 #include "core/output.h"
-#include "experiments/progress.h"
-#include "experiments/run.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/runs/run.h"
+#include "experiments/sweeps/progress.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "report/tables.h"
 
 namespace vigil::app {

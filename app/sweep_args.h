@@ -6,8 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "experiments/sweep_shard.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_shard.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::app {
 

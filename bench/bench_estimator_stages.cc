@@ -13,7 +13,7 @@
 
 #include "bench/estimator_stages.h"
 #include "estimator/run_estimator.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/simulator.h"
 #include "tests/estimator/sim_run.h"
 

@@ -14,7 +14,7 @@
 
 #include "estimator/init/vins_initializer.h"
 #include "estimator/run_estimator.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "tests/estimator/init/simulated_window.h"
 #include "tests/estimator/sim_run.h"
 

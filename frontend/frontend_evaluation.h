@@ -1,7 +1,7 @@
 // Evaluation of feature tracks: track lengths, and errors against true pixels (frontend/track_truth.h).
 //
 // Pure functions of the tracks (and the truth); what metrics.json's "frontend" key and `vigil track`'s
-// frontend.json report (experiments/frontend_metrics.h writes them).
+// frontend.json report (experiments/runs/frontend_metrics.h writes them).
 //   - track length: published frames a track id appears in;
 //   - reprojection error: |observed pixel - true pixel| of every observation that is not its track's first
 //     (a first observation defines its track's scene point) and whose truth is known;

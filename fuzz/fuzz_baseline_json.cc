@@ -1,6 +1,6 @@
 // libFuzzer target: a regression baseline (ReadBaseline, as `vigil regress --baseline FILE` reads it; in
 // memory, the file reading is the CSV targets' ReadFile).
-#include "experiments/regression_baseline.h"
+#include "experiments/sweeps/regression_baseline.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

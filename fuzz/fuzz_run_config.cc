@@ -1,5 +1,5 @@
 // libFuzzer target: a run configuration file (YAML binding, bounds, cross-key checks): `vigil config FILE`.
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,6 +1,6 @@
 // libFuzzer target: a run's metrics.json as `vigil tables` reads it (ReadRunMetrics for the run of seed 1;
 // in memory).
-#include "experiments/run_metrics_file.h"
+#include "experiments/runs/run_metrics_file.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

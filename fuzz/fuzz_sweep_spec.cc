@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "core/output.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 #include "fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

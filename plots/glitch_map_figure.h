@@ -1,11 +1,12 @@
 // The glitch-sweep map figure: one heat map per method of the ATE relative to the glitch-free ATE of the same
-// seeds (experiments/glitch_map.h), cell values printed; green at or below 1, red from 3 up (log scale).
-// Drawn from what the runs recorded (metrics.json through ReadGlitchMap), never by re-running anything.
+// seeds (experiments/sweeps/glitch_map.h), cell values printed; green at or below 1, red from 3 up (log
+// scale). Drawn from what the runs recorded (metrics.json through ReadGlitchMap), never by re-running
+// anything.
 #pragma once
 
 #include <filesystem>
 
-#include "experiments/glitch_map.h"
+#include "experiments/sweeps/glitch_map.h"
 #include "plots/figure.h"
 #include "plots/render.h"
 

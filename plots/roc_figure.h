@@ -1,12 +1,12 @@
 // The detector ROC figure: true-positive rate vs false-positive rate per sample, one curve per detector
-// (experiments/detection_roc.h), its threshold points marked; drawn from what the runs recorded.
+// (experiments/sweeps/detection_roc.h), its threshold points marked; drawn from what the runs recorded.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "experiments/detection_roc.h"
+#include "experiments/sweeps/detection_roc.h"
 #include "plots/figure.h"
 #include "plots/render.h"
 

@@ -9,7 +9,7 @@
 #include "core/dataset.h"
 #include "core/error.h"
 #include "core/output.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 
 namespace vigil::plots {
 namespace {

@@ -19,8 +19,8 @@
 
 #include "core/dataset.h"
 #include "core/types.h"
-#include "experiments/imu_axis_record.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/imu_axis_record.h"
+#include "experiments/runs/run_config.h"
 
 namespace vigil::plots {
 
@@ -67,9 +67,9 @@ struct RunData {
 RunData LoadRunDirectory(const std::filesystem::path& dir);
 
 // What a run recorded for its figures (run.h's figure data), read when a figure needs it: landmarks.csv and
-// imu_axis.csv (experiments/imu_axis_record.h). Nothing when the file is absent (a run written before runs
-// recorded it, or with --no-figure-data / write_figure_data: false); `why` then says which file is missing.
-// A file that is there but bad throws InputError.
+// imu_axis.csv (experiments/runs/imu_axis_record.h). Nothing when the file is absent (a run written before
+// runs recorded it, or with --no-figure-data / write_figure_data: false); `why` then says which file is
+// missing. A file that is there but bad throws InputError.
 std::optional<std::vector<Landmark>> RecordedLandmarks(const RunData& run, std::string* why);
 std::optional<experiments::ImuAxisRecord> RecordedImuAxis(const RunData& run, std::string* why);
 

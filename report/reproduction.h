@@ -18,7 +18,7 @@
 #include <map>
 #include <string>
 
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 #include "report/claims.h"
 
 namespace vigil::report {

@@ -8,7 +8,7 @@
 #include "core/output.h"
 #include "core/staging.h"
 #include "evaluation/statistics.h"
-#include "experiments/results_csv.h"
+#include "experiments/sweeps/results_csv.h"
 #include "report/paper_reference.h"
 #include "report/reproduction.h"
 

@@ -8,8 +8,8 @@
 
 #include <filesystem>
 
-#include "experiments/sweep_aggregate.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_aggregate.h"
+#include "experiments/sweeps/sweep_spec.h"
 #include "report/result_table.h"
 
 namespace vigil::report {

@@ -1,7 +1,8 @@
 // Ctrl-C (SIGINT), SIGTERM or SIGHUP while `vigil run` waits for an external estimator: the signal is handed
 // on to the estimator, which ends with everything it started, the temporary recording is removed, and vigil
-// ends with the same signal. The fake estimator (tests/experiments/fake_estimator.cc, mode announce) tells
-// the test through a FIFO that it runs: no timing margin, the 60 s poll only keeps a failure from hanging.
+// ends with the same signal. The fake estimator (tests/experiments/external/fake_estimator.cc, mode announce)
+// tells the test through a FIFO that it runs: no timing margin, the 60 s poll only keeps a failure from
+// hanging.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>

@@ -10,7 +10,7 @@
 #include "core/interpolation.h"
 #include "estimator/estimator_input.h"
 #include "evaluation/evaluate_trajectory.h"
-#include "experiments/run_inputs.h"
+#include "experiments/runs/run_inputs.h"
 #include "sim/simulator.h"
 
 namespace vigil::estimator::testing {

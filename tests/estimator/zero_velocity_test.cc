@@ -12,8 +12,8 @@
 #include "estimator/run_estimator.h"
 #include "estimator/static_initializer.h"
 #include "estimator/zero_velocity_detector.h"
-#include "experiments/run_config.h"
-#include "experiments/run_inputs.h"
+#include "experiments/runs/run_config.h"
+#include "experiments/runs/run_inputs.h"
 #include "sim/simulator.h"
 
 namespace vigil::estimator {

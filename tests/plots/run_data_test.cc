@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
-#include "experiments/sweep_spec.h"
+#include "experiments/sweeps/sweep_spec.h"
 #include "plots/figure_data.h"
 #include "plots/trajectory_alignment.h"
 #include "sim/simulator.h"

@@ -18,8 +18,8 @@
 #include "core/output.h"
 #include "core/random.h"
 #include "detectors/detector.h"
-#include "experiments/imu_axis_record.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/imu_axis_record.h"
+#include "experiments/runs/run_config.h"
 #include "sim/simulator.h"
 
 namespace vigil::plots::testing {

@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
-#include "experiments/regression.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/sweeps/regression.h"
+#include "experiments/sweeps/sweep_runner.h"
 #include "tests/core/test_util.h"
-#include "tests/experiments/sweep_test_util.h"
+#include "tests/experiments/sweeps/sweep_test_util.h"
 
 namespace vigil::report {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/euroc.h"
 #include "core/mesh.h"
 #include "core/output.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/scene.h"
 #include "sim/simulator.h"
 #include "sim/trajectory_model.h"

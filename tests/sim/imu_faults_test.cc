@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/dataset.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/scale_misalignment.h"
 #include "sim/simulator.h"
 #include "tests/core/test_util.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/imu_presets.h"
 #include "sim/imu_synthesizer.h"
 #include "sim/vibration.h"

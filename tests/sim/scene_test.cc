@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/config.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "sim/landmarks.h"
 #include "sim/simulator.h"
 

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/output.h"
-#include "experiments/run_config.h"
+#include "experiments/runs/run_config.h"
 #include "tests/core/test_util.h"
 
 namespace vigil::sim {
