@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/dataset.h"
+#include "core/error.h"
 #include "core/format.h"
 #include "core/output.h"
 #include "core/pose_checks.h"
@@ -113,7 +114,8 @@ ExternalTrajectory ReadExternalTrajectory(const fs::path& path, TrajectoryFormat
   const std::string name = path.filename().string();
   const auto fail = [&](int line, const std::string& why) {
     out.trajectory.clear();
-    out.failure = line > 0 ? name + ":" + std::to_string(line) + ": " + why : name + ": " + why;
+    // One printable line, whatever bytes of the file `why` quotes (the run's reason, metrics.json, logs).
+    out.failure = OneLine(line > 0 ? name + ":" + std::to_string(line) + ": " + why : name + ": " + why);
     return out;
   };
   std::error_code ec;

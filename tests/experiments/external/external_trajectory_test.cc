@@ -99,6 +99,8 @@ TEST(ExternalTrajectory, EveryBadFileIsAReasonNotACrash) {
                 .find("timestamps are not strictly increasing"),
             std::string("z.txt:2: ").size());
   EXPECT_EQ(from_zero("0.0 0 0 0 0 0 0 1\n0.05 0 0 0 0 0 0 1\n", TimeUnit::kSeconds), "");
+  // A reason quotes the file's bytes on one printable line (found by fuzz/fuzz_external_trajectory.cc).
+  EXPECT_EQ(failure("2 0 0 0 0 0 0 1\v\x01\n"), "t.txt:1: column 8: '1\\x0b\\x01' is not a finite number");
   EXPECT_NE(ReadExternalTrajectory(tmp.path() / "absent.txt", TrajectoryFormat::kTum, TimeUnit::kSeconds,
                                    kFirst, kLast)
                 .failure.find("wrote no trajectory"),
