@@ -79,9 +79,8 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A) {
       pivots_[k + 1].matrixU().solveInPlace<Eigen::OnTheRight>(E);
       pivot.noalias() -= E * E.transpose();
       first = std::min(first, first_pose_column_[k + 1]);
-      const int width = pose_columns - first;
-      rows.rightCols(width).noalias() -=
-          E.lazyProduct(pose_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * (k + 1)).rightCols(width));
+      const PoseRowsBlock newer = NonzeroPoseRows(k + 1);
+      rows.rightCols(newer.cols()).noalias() -= E.lazyProduct(newer);
     }
     pivots_[k].compute(pivot);
     if (pivots_[k].info() != Eigen::Success) return false;
@@ -96,6 +95,11 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A) {
   }
   poses_.compute(S);
   return poses_.info() == Eigen::Success;
+}
+
+WindowFactorization::PoseRowsBlock WindowFactorization::NonzeroPoseRows(int k) const {
+  const int first = first_pose_column_[k];
+  return PoseRowsBlock(pose_rows_, kSpeedBiasSize * k, first, kSpeedBiasSize, pose_rows_.cols() - first);
 }
 
 Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
@@ -113,19 +117,16 @@ Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
     b_poses.segment<kPoseTangentSize>(kPoseTangentSize * j) =
         b.segment<kPoseTangentSize>(WindowInformation::PoseColumn(j));
   for (int k = 0; k < n; ++k) {
-    const int width = pose_columns - first_pose_column_[k];
-    b_poses.tail(width).noalias() -=
-        pose_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * k).rightCols(width).transpose() *
-        y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
+    const PoseRowsBlock rows = NonzeroPoseRows(k);
+    b_poses.tail(rows.cols()).noalias() -= rows.transpose() * y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
   }
   const Eigen::VectorXd x_poses = poses_.solve(b_poses);
   // Backward: the chain from the oldest, given the poses.
   Eigen::VectorXd x(b.size());
   for (int k = 0; k < n; ++k) {
-    const int width = pose_columns - first_pose_column_[k];
+    const PoseRowsBlock rows = NonzeroPoseRows(k);
     Eigen::Matrix<double, kSpeedBiasSize, 1> x_k = y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
-    x_k.noalias() -=
-        pose_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * k).rightCols(width) * x_poses.tail(width);
+    x_k.noalias() -= rows * x_poses.tail(rows.cols());
     if (k > 0)
       x_k.noalias() -= couplings_[k - 1].transpose() *
                        x.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k - 1));

@@ -40,6 +40,10 @@ class WindowFactorization {
 
  private:
   using SpeedBiasMatrix = Eigen::Matrix<double, kSpeedBiasSize, kSpeedBiasSize>;
+  using PoseRowsBlock = Eigen::Block<const Eigen::MatrixXd, kSpeedBiasSize, Eigen::Dynamic>;
+
+  // Speed-bias block k's rows of the factor over the poses, from its first nonzero column on.
+  PoseRowsBlock NonzeroPoseRows(int k) const;
 
   int frames_ = 0;
   bool chain_ = false;
