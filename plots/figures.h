@@ -19,9 +19,6 @@
 
 namespace vigil::plots {
 
-// The colour of a method in every figure (original, trunc, dtw keep theirs across figures).
-Color MethodColor(const std::string& method);
-
 struct ScenarioData {
   std::string title;
   std::vector<Eigen::Vector3d> path_W;  // body positions

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "plots/figures.h"
+#include "plots/method_colors.h"
 #include "plots/style.h"
 
 namespace vigil::plots {
@@ -10,6 +11,12 @@ namespace vigil::plots {
 Figure RelativeErrorFigure(const std::vector<RelativeErrorRow>& rows, const std::string& note) {
   const int n = std::max<int>(1, static_cast<int>(rows.size()));
   Figure figure(n, 2, "Relative error vs distance travelled (" + note + ")");
+  std::vector<std::string> methods;
+  for (const RelativeErrorRow& row : rows)
+    for (const RelativeErrorBoxes& boxes : row.methods)
+      if (std::find(methods.begin(), methods.end(), boxes.method) == methods.end())
+        methods.push_back(boxes.method);
+  const MethodColors colors(methods);
   for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
     const RelativeErrorRow& row = rows[r];
     // Boxes of one distance sit side by side inside 70 % of the smallest gap between distances.
@@ -44,7 +51,7 @@ Figure RelativeErrorFigure(const std::vector<RelativeErrorRow>& rows, const std:
         const auto& stats = col == 0 ? boxes.trans_m : boxes.yaw_deg;
         for (std::size_t i = 0; i < boxes.distances_m.size() && i < stats.size(); ++i) {
           const double x = boxes.distances_m[i] + (m - (k - 1) / 2.0) * slot;
-          axes.Box(x, stats[i], slot * 0.4, MethodColor(boxes.method), boxes.method);
+          axes.Box(x, stats[i], slot * 0.4, colors.Of(boxes.method), boxes.method);
           y_hi = std::max(y_hi, stats[i].whisker_hi);
         }
       }

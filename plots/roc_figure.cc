@@ -5,6 +5,7 @@
 
 #include "plots/figure_png.h"
 #include "plots/figures.h"
+#include "plots/method_colors.h"
 
 namespace vigil::plots {
 
@@ -16,6 +17,9 @@ Figure RocFigure(const std::vector<experiments::RocCurve>& curves, const std::st
   axes.y_label = "true-positive rate";
   axes.legend = LegendPosition::kLowerRight;
   double x_hi = 0.0;
+  std::vector<std::string> detectors;
+  for (const experiments::RocCurve& curve : curves) detectors.push_back(curve.detector);
+  const MethodColors colors(detectors);
   for (std::size_t i = 0; i < curves.size(); ++i) {
     std::vector<double> x, y;
     for (const experiments::RocPoint& p : curves[i].points) {
@@ -25,7 +29,7 @@ Figure RocFigure(const std::vector<experiments::RocCurve>& curves, const std::st
     }
     if (x.empty()) continue;
     x_hi = std::max(x_hi, *std::max_element(x.begin(), x.end()));
-    const Color color = MethodColor(curves[i].detector);
+    const Color color = colors.Of(curves[i].detector);
     axes.Line(x, y, color, curves[i].detector);
     axes.Scatter(x, y, color, "", 1.2);
   }

@@ -1,20 +1,8 @@
 // Figure 1: the simulated scenario (trajectory and landmarks) in three projections and a 3-D view.
-#include <cstdint>
-
 #include "plots/figures.h"
 #include "plots/style.h"
 
 namespace vigil::plots {
-
-Color MethodColor(const std::string& method) {
-  if (method == "original") return PaletteColor(1);
-  if (method == "trunc") return PaletteColor(0);
-  if (method == "dtw") return PaletteColor(2);
-  if (method == "hampel") return PaletteColor(3);
-  uint32_t hash = 0;  // unsigned: the hash wraps around (a signed int overflowed: UBSan)
-  for (char c : method) hash = hash * 31 + static_cast<unsigned char>(c);
-  return PaletteColor(4 + static_cast<int>(hash & 3));
-}
 
 Figure ScenarioFigure(const ScenarioData& data) {
   Figure figure(2, 2, data.title.empty() ? "Simulated trajectory and landmarks" : data.title);

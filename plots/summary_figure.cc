@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "plots/figures.h"
+#include "plots/method_colors.h"
 #include "plots/style.h"
 
 namespace vigil::plots {
@@ -23,6 +24,7 @@ Figure SummaryFigure(const std::vector<std::string>& setting_labels, const std::
     categories.emplace_back(static_cast<double>(i), setting_labels[i]);
   const int k = std::max<int>(1, static_cast<int>(methods.size()));
   const double slot = 0.7 / k;
+  const MethodColors colors(methods);
   for (int col = 0; col < 2; ++col) {
     Axes& axes = figure.AddAxes(0, col);
     axes.title = col == 0 ? "ATE translation (RMSE)" : "ATE rotation (RMSE)";
@@ -32,7 +34,7 @@ Figure SummaryFigure(const std::vector<std::string>& setting_labels, const std::
     axes.legend = col == 0 ? LegendPosition::kUpperLeft : LegendPosition::kNone;
     double y_hi = 0.0;
     for (int m = 0; m < static_cast<int>(methods.size()); ++m) {
-      const Color color = MethodColor(methods[m]);
+      const Color color = colors.Of(methods[m]);
       std::vector<double> med_x, med_y;
       for (const SummaryCell& c : cells) {
         if (c.method != methods[m]) continue;
