@@ -30,6 +30,13 @@ std::string ExpandDataDir(const std::string& path) {
   return (std::filesystem::absolute(dir) / rest).lexically_normal().string();
 }
 
+std::string ResolveInputPath(const std::filesystem::path& base_dir, const std::string& path) {
+  const std::string expanded = ExpandDataDir(path);
+  if (expanded.empty() || NamesDataDir(expanded) || std::filesystem::path(expanded).is_absolute())
+    return expanded;
+  return std::filesystem::absolute(base_dir / expanded).lexically_normal().string();
+}
+
 std::string UnsetDataDirReason(const std::string& path) {
   if (!NamesDataDir(path) || !DataDir().empty()) return "";
   return path +

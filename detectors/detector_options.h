@@ -49,6 +49,14 @@ inline const config::EnumNames<ThresholdCalibration>& ThresholdCalibrationNames(
 // the config is read (2e9 made the allocation fail).
 inline constexpr int kMaxDetectorWindowSamples = 100000;
 
+// Largest DTW library build: k templates, slices of M samples, clean slices clustered (the paper's k = 10,
+// M = 40, vigil's default 400 slices). The build keeps a slices x slices distance matrix, and a run without a
+// template file simulates 2 (k + 1) M clean samples for it (within sim's 1e7-sample limit), so larger values
+// are refused when the config is read.
+inline constexpr int kMaxDtwTemplates = 1000;
+inline constexpr int kMaxDtwSliceSamples = 4000;
+inline constexpr int kMaxDtwBuildSlices = 5000;
+
 // The paper's threshold detector ("trunc"), per axis on the measured value itself: a value above upper[axis]
 // or below lower[axis] is abnormal. Mitigation threshold: clamp to the violated bound (the paper's choice in
 // its VINS integration); mean: the mean of the axis' last n output values. Bounds: calibration clean (a run
@@ -157,12 +165,15 @@ struct DtwOptions {
     using config::Bounds;
     v.Field("templates_file", templates_file,
             "template library written by `vigil templates` (empty: the run builds one from a glitch-free "
-            "simulation with seed DeriveSeed(seed, \"templates\"))");
-    v.Field("templates", templates, "k: number of templates (library build)", Bounds::AtLeast(1));
+            "simulation with seed DeriveSeed(seed, \"templates\")); relative to the config file, or "
+            "$VIGIL_DATA/...");
+    v.Field("templates", templates, "k: number of templates (library build)",
+            Bounds::Closed(1, kMaxDtwTemplates));
     v.Field("template_length", template_length, "N: rows per template, <= slice_length (library build)",
             Bounds::AtLeast(1));
     v.Field("slice_length", slice_length,
-            "M: samples per slice; bounded latency of the detector (library build)", Bounds::AtLeast(2));
+            "M: samples per slice; bounded latency of the detector (library build)",
+            Bounds::Closed(2, kMaxDtwSliceSamples));
     v.Field("dims", dims, "d: 3 (acc) or 6 (acc + gyro) channels compared (library build)",
             Bounds::Closed(3, 6));
     v.Enum("normalization", normalization, SliceNormalizationNames(),
@@ -180,7 +191,7 @@ struct DtwOptions {
             "calibration: threshold = margin x that quantile (library build)", Bounds::AtLeast(1.0));
     v.Field("max_build_slices", max_build_slices,
             "library build: at most this many clean slices (evenly spread) are clustered",
-            Bounds::AtLeast(1));
+            Bounds::Closed(1, kMaxDtwBuildSlices));
     v.Field("swap_passes", swap_passes, "library build: k-medoids swap passes after the greedy start",
             Bounds::NonNegative());
   }
@@ -222,7 +233,9 @@ struct DetectorOptions {
             "runs on a recording (--dataset): the glitch-free reference that threshold bounds (calibration "
             "clean) and dtw templates (no templates_file) are calibrated on: a dataset directory (its "
             "imu_clean.csv, else imu.csv), a EuRoC folder (mav0/imu0/data.csv) or an IMU CSV. Empty: the "
-            "recording's own imu_clean.csv, else the run refuses. Simulated runs ignore it");
+            "recording's own imu_clean.csv, else the run refuses. Relative to the config file, or "
+            "$VIGIL_DATA/...; "
+            "simulated runs ignore it");
     v.Section("threshold", threshold,
               "the paper's threshold detector (trunc): bounds on the measured value, clamp or mean");
     v.Section("relative_threshold", relative_threshold,

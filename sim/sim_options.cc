@@ -8,11 +8,8 @@ namespace vigil::sim {
 
 void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* options) {
   for (std::string* file :
-       {&options->trajectory.waypoints_file, &options->trajectory.recording, &options->imu.recording}) {
-    *file = ExpandDataDir(*file);  // left as it is while VIGIL_DATA is unset: ValidateSimOptions says so
-    if (file->empty() || NamesDataDir(*file) || std::filesystem::path(*file).is_absolute()) continue;
-    *file = std::filesystem::absolute(base_dir / *file).lexically_normal().string();
-  }
+       {&options->trajectory.waypoints_file, &options->trajectory.recording, &options->imu.recording})
+    *file = ResolveInputPath(base_dir, *file);  // "$VIGIL_DATA" while unset: ValidateSimOptions says so
 }
 
 // Shorter recordings have too few samples and frames for a run to read them.

@@ -20,6 +20,10 @@ detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const sim::Sim
   return library;
 }
 
+// The longest such simulation stays within the simulator's limit, which would otherwise blame duration_s.
+static_assert(2.0 * (detectors::kMaxDtwTemplates + 1) * detectors::kMaxDtwSliceSamples <=
+              sim::kMaxImuSamples);
+
 detectors::TemplateLibrary BuildTemplatesFromGlitchFreeSimulation(const RunConfig& config) {
   // A short run still gets a library: at least twice the k + 1 slices BuildTemplates needs.
   sim::SimOptions scenario = config.sim;

@@ -6,6 +6,7 @@
 #include <system_error>
 #include <utility>
 
+#include "core/data_dir.h"
 #include "core/error.h"
 #include "core/recording_files.h"
 #include "detectors/detector.h"
@@ -23,12 +24,10 @@ RunConfig LoadLayers(const std::string& path, const std::vector<std::string>& ov
   sim::ApplyImuPreset(preset, &config.sim.imu);
   if (!path.empty()) {
     config::LoadFile(path, config);
-    sim::ResolveRelativePaths(std::filesystem::path(path).parent_path(),
-                              &config.sim);  // relative to the file
+    ResolveRelativePaths(std::filesystem::path(path).parent_path(), &config);  // relative to the file
   }
   for (const auto& o : overrides) config::ApplyOverride(o, config);
-  sim::ResolveRelativePaths(std::filesystem::current_path(),
-                            &config.sim);  // --set paths: relative to the cwd
+  ResolveRelativePaths(std::filesystem::current_path(), &config);  // --set paths: relative to the cwd
   return config;
 }
 
@@ -51,8 +50,19 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   return config;
 }
 
+void ResolveRelativePaths(const std::filesystem::path& base_dir, RunConfig* config) {
+  sim::ResolveRelativePaths(base_dir, &config->sim);
+  for (std::string* file : {&config->detector.dtw.templates_file, &config->detector.calibration_dataset})
+    *file = ResolveInputPath(base_dir, *file);
+}
+
 void ValidateRunConfig(const RunConfig& config, const std::string& origin) {
   sim::ValidateSimOptions(config.sim, origin);
+  for (const auto& [key, file] :
+       {std::pair{"detector.dtw.templates_file", &config.detector.dtw.templates_file},
+        std::pair{"detector.calibration_dataset", &config.detector.calibration_dataset}})
+    if (const std::string why = UnsetDataDirReason(*file); !why.empty())
+      throw InputError(origin + ": " + key + ": " + why);
   if (config.sim.imu.source == sim::ImuSource::kRecording &&
       config.frontend.features == frontend::FeatureSource::kTracked)
     throw InputError(origin +

@@ -59,6 +59,11 @@ struct RunConfig {
 // cross-field constraints. Throws InputError naming the file, line and key.
 RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// Makes every input path of `config` usable from anywhere, as core/data_dir.h ResolveInputPath does against
+// `base_dir` (the config file's directory, or the working directory for --set values): the simulator's files
+// (sim::ResolveRelativePaths), detector.dtw.templates_file and detector.calibration_dataset.
+void ResolveRelativePaths(const std::filesystem::path& base_dir, RunConfig* config);
+
 // Cross-field checks that a single key's bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateRunConfig(const RunConfig& config, const std::string& origin);
 

@@ -134,9 +134,14 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   s += buf;
   if (!m.at("relative").empty()) {
     const nlohmann::json& r = m.at("relative").front();
-    std::snprintf(
-        buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg", evaluation::MetricNumber(r, {"distance_m"}),
-        evaluation::MetricNumber(r, {"trans_m", "mean"}), evaluation::MetricNumber(r, {"yaw_deg", "mean"}));
+    const double trans_m = evaluation::MetricNumber(r, {"trans_m", "mean"});
+    // No segment of that length (a short or inconclusive run): said, not printed as "nan m".
+    if (std::isfinite(trans_m))
+      std::snprintf(buf, sizeof(buf), ", RE %g m %.3f m / %.3f deg",
+                    evaluation::MetricNumber(r, {"distance_m"}), trans_m,
+                    evaluation::MetricNumber(r, {"yaw_deg", "mean"}));
+    else
+      std::snprintf(buf, sizeof(buf), ", RE %g m: no segment", evaluation::MetricNumber(r, {"distance_m"}));
     s += buf;
   }
   const double nees_p = evaluation::MetricNumber(m, {"nees", "position", "mean"});

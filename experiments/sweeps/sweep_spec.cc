@@ -420,7 +420,7 @@ void ThrowCellError(const SweepSpec& spec, const SweepCell& cell, const std::str
 RunConfig ResolveCellConfig(const SweepSpec& spec, const SweepCell& cell) {
   RunConfig config = LoadRunConfig(spec.base.string());
   for (const SweepOverride* o : CellOverrides(spec, cell)) Apply(spec.path, *o, &config);
-  sim::ResolveRelativePaths(fs::path(spec.path).parent_path(), &config.sim);
+  ResolveRelativePaths(fs::path(spec.path).parent_path(), &config);
   sim::ResolveDurationToEnd(&config.sim);
   const std::string origin = CellOrigin(spec, cell);
   try {

@@ -31,6 +31,16 @@ TEST(DataDir, ARelativeVigilDataIsRelativeToTheWorkingDirectory) {
   EXPECT_EQ(ExpandDataDir("$VIGIL_DATA/a"), (std::filesystem::current_path() / "sets/a").string());
 }
 
+TEST(DataDir, AnInputPathIsResolvedAgainstItsBase) {
+  const ScopedDataDir set("/datasets");
+  EXPECT_EQ(ResolveInputPath("/configs", "../data/gt.csv"), "/data/gt.csv");
+  EXPECT_EQ(ResolveInputPath("/configs", "/abs/gt.csv"), "/abs/gt.csv");
+  EXPECT_EQ(ResolveInputPath("/configs", ""), "");
+  EXPECT_EQ(ResolveInputPath("/configs", "$VIGIL_DATA/euroc"), "/datasets/euroc");
+  const ScopedDataDir unset(nullptr);
+  EXPECT_EQ(ResolveInputPath("/configs", "$VIGIL_DATA/euroc"), "$VIGIL_DATA/euroc");
+}
+
 TEST(DataDir, UnsetOrEmptyItIsRefusedWithTheVariablesName) {
   for (const char* value : {static_cast<const char*>(nullptr), ""}) {
     const ScopedDataDir unset(value);

@@ -1,5 +1,6 @@
 #include "experiments/runs/run_config.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -95,6 +96,25 @@ TEST(RunConfig, VigilDataPathsNeedTheVariable) {
   EXPECT_EQ(LoadRunConfig(path).sim.imu.recording, "/datasets/euroc/V1_01_easy");
 }
 
+TEST(RunConfig, EveryInputPathIsRelativeToTheConfigFile) {
+  // The detector's files as the simulator's: relative to the config file, --set values to the working
+  // directory, "$VIGIL_DATA/..." in the data folder.
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "sub");
+  const std::string path = dir.File(
+      "sub/c.yaml", "detector:\n  calibration_dataset: ../clean\n  dtw:\n    templates_file: t.yaml\n");
+  const RunConfig from_file = LoadRunConfig(path);
+  EXPECT_EQ(from_file.detector.calibration_dataset, (dir.path() / "clean").string());
+  EXPECT_EQ(from_file.detector.dtw.templates_file, (dir.path() / "sub/t.yaml").string());
+  const RunConfig from_set = LoadRunConfig(path, {"detector.dtw.templates_file=lib.yaml"});
+  EXPECT_EQ(from_set.detector.dtw.templates_file, (std::filesystem::current_path() / "lib.yaml").string());
+  const vigil::testing::ScopedDataDir unset(nullptr);
+  EXPECT_EQ(InputErrorOf([&] { LoadRunConfig(path, {"detector.calibration_dataset=$VIGIL_DATA/c"}); }),
+            "--set detector.calibration_dataset=$VIGIL_DATA/c: detector.calibration_dataset: $VIGIL_DATA/c "
+            "names $VIGIL_DATA, which is not set: export VIGIL_DATA=the folder that holds your datasets "
+            "(docs/datasets.md)");
+}
+
 TEST(RunConfig, CrossKeyErrorOfASetKeyNotInTheFileNamesTheSet) {
   TempDir dir;
   const std::string path = dir.File("c.yaml", "seed: 1\ncamera:\n  rate_hz: 20\n");
@@ -145,8 +165,10 @@ TEST(RunConfig, KeysThatFeedTheImuAreBounded) {
 // Sizes that a config value drives are bounded before anything is allocated: 2e9 random landmarks or a
 // detector window of 2e9 samples ended in std::bad_alloc (exit 1) instead of an error naming the key.
 TEST(RunConfig, SizesThatDriveAllocationsAreBounded) {
-  for (const char* key : {"landmarks.random_count", "detector.threshold.mean_samples",
-                          "detector.relative_threshold.reference_samples", "detector.hampel.half_window"}) {
+  for (const char* key :
+       {"landmarks.random_count", "detector.threshold.mean_samples",
+        "detector.relative_threshold.reference_samples", "detector.hampel.half_window",
+        "detector.dtw.templates", "detector.dtw.slice_length", "detector.dtw.max_build_slices"}) {
     const std::string error = InputErrorOf([&] { LoadRunConfig("", {std::string(key) + "=2000000000"}); });
     EXPECT_EQ(error.rfind("--set: " + std::string(key) + ": must be in [", 0), 0u) << error;
   }

@@ -92,6 +92,12 @@ TEST(RunMetrics, InconclusiveRunsHaveTheirOwnVerdict) {
   EXPECT_NE(line.find(": no ATE (posyaw alignment undefined over 0.011 m, coverage 100.0 %)"),
             std::string::npos)
       << line;
+
+  // A relative-error distance with no segment along 0.011 m is said so, not printed as "nan m".
+  ev.relative.emplace_back().distance_m = 7.0;
+  const std::string no_segment = RunSummaryLine(RunMetricsJson(summary, result, ev, detection));
+  EXPECT_NE(no_segment.find(", RE 7 m: no segment,"), std::string::npos) << no_segment;
+  EXPECT_EQ(no_segment.find("nan"), std::string::npos) << no_segment;
 }
 
 }  // namespace
