@@ -85,6 +85,7 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
   d.b_d = 0.0;
   d.w.clear();
   if (first == last) return true;
+  lower_stale_ = true;
   // The depth's row of the information: its pivot h_dd, gradient b_d and coupling w to each pose the track
   // involves (its anchor first, then one observing pose per reprojection, each a different frame).
   double h_dd = 0.0, b_d = 0.0;
@@ -109,11 +110,16 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
     const auto Ja = J.leftCols<kPose>();
     const auto Jo = J.middleCols<kPose>(kPose);
     const auto Jd = J.col(2 * kPose);
+    // The upper block triangle only (MirrorUpperTriangles fills the lower one when it is read).
     H_.block<kPose, kPose>(anchor, anchor).noalias() += Ja.transpose() * Ja;
     H_.block<kPose, kPose>(observer, observer).noalias() += Jo.transpose() * Jo;
-    const Eigen::Matrix<double, kPose, kPose> H_ao = Ja.transpose() * Jo;
-    H_.block<kPose, kPose>(anchor, observer) += H_ao;
-    H_.block<kPose, kPose>(observer, anchor) += H_ao.transpose();
+    if (anchor < observer) {
+      H_.block<kPose, kPose>(anchor, observer).noalias() += Ja.transpose() * Jo;
+    } else if (observer < anchor) {
+      H_.block<kPose, kPose>(observer, anchor).noalias() += Jo.transpose() * Ja;
+    } else {  // a degenerate factor on one pose: both cross terms on its diagonal block
+      H_.block<kPose, kPose>(anchor, anchor).noalias() += Ja.transpose() * Jo + Jo.transpose() * Ja;
+    }
     g_.segment<kPose>(anchor).noalias() += Ja.transpose() * r;
     g_.segment<kPose>(observer).noalias() += Jo.transpose() * r;
     h_dd += Jd.squaredNorm();
@@ -125,19 +131,29 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
   if (!(h_dd > eigen_threshold)) return true;
   d.h_dd = h_dd;
   d.b_d = b_d;
+  // Each unordered pair of the track's poses once, into the upper block triangle.
   for (const auto& [column_p, w_p] : w) {
     const Vector6d f = w_p / h_dd;
     if (separate_fill_) {
       fill_g_.segment<kPose>(column_p) += f * b_d;
       for (const auto& [column_q, w_q] : w)
-        fill_H_.block<kPose, kPose>(column_p, column_q).noalias() += f * w_q.transpose();
+        if (column_q >= column_p)
+          fill_H_.block<kPose, kPose>(column_p, column_q).noalias() += f * w_q.transpose();
     } else {
       g_.segment<kPose>(column_p) -= f * b_d;
       for (const auto& [column_q, w_q] : w)
-        H_.block<kPose, kPose>(column_p, column_q).noalias() -= f * w_q.transpose();
+        if (column_q >= column_p) H_.block<kPose, kPose>(column_p, column_q).noalias() -= f * w_q.transpose();
     }
   }
   return true;
+}
+
+void WindowInformation::MirrorUpperTriangles() const {
+  if (!lower_stale_) return;
+  for (Eigen::MatrixXd* m : {&H_, &fill_H_})
+    for (Eigen::Index j = 0; j < m->cols(); ++j)
+      for (Eigen::Index i = j + 1; i < m->rows(); ++i) (*m)(i, j) = (*m)(j, i);
+  lower_stale_ = false;
 }
 
 void WindowInformation::SeparateDepthFill() {

@@ -65,13 +65,22 @@ class WindowInformation {
   // to depth_fill_H() and depth_fill_g() instead of subtracting it from H() and g(): H() - depth_fill_H()
   // is then the information with the depths eliminated. A solve that damps the depths rescales the fill.
   void SeparateDepthFill();
-  const Eigen::MatrixXd& depth_fill_H() const { return fill_H_; }
+  const Eigen::MatrixXd& depth_fill_H() const {
+    MirrorUpperTriangles();
+    return fill_H_;
+  }
   const Eigen::VectorXd& depth_fill_g() const { return fill_g_; }
 
   int frames() const { return static_cast<int>(pose_blocks_.size()); }
   // Symmetric, both triangles filled.
-  const Eigen::MatrixXd& H() const { return H_; }
-  Eigen::MatrixXd& mutable_H() { return H_; }
+  const Eigen::MatrixXd& H() const {
+    MirrorUpperTriangles();
+    return H_;
+  }
+  Eigen::MatrixXd& mutable_H() {
+    MirrorUpperTriangles();
+    return H_;
+  }
   const Eigen::VectorXd& g() const { return g_; }
 
  private:
@@ -85,12 +94,17 @@ class WindowInformation {
   void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
                   const Eigen::VectorXd& g);
 
+  // AddTrack adds each pair of a track's poses once, to the upper block triangle of H and of the depth fill
+  // (half the products of a track's Schur fill); the accessors copy it to the lower triangle first.
+  void MirrorUpperTriangles() const;
+
   std::vector<double*> pose_blocks_;
   std::vector<double*> speed_bias_blocks_;
-  Eigen::MatrixXd H_;
+  mutable Eigen::MatrixXd H_;  // mutable: the lower triangle is filled lazily (MirrorUpperTriangles)
   Eigen::VectorXd g_;
   bool separate_fill_ = false;
-  Eigen::MatrixXd fill_H_;
+  mutable Eigen::MatrixXd fill_H_;
+  mutable bool lower_stale_ = false;
   Eigen::VectorXd fill_g_;
 };
 
