@@ -37,8 +37,13 @@ void AddSimulateCommand(CLI::App& root) {
     inputs.emplace_back(args->config.config_path);
     RefuseOutputOverInputs(args->output, inputs);
     const auto start = std::chrono::steady_clock::now();
-    const Dataset d =
-        sim::SimulateToDirectory(config.sim, config.seed, config::ToYaml(config), args->output, args->force);
+    Dataset d;
+    try {
+      d = sim::SimulateToDirectory(config.sim, config.seed, config::ToYaml(config), args->output,
+                                   args->force);
+    } catch (const InputError& e) {
+      experiments::RethrowLocated(args->config.config_path, overrides, e);
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::size_t fewest = d.frames.empty() ? 0 : d.frames.front().features.size(), observations = 0;
     for (const CameraFrame& f : d.frames) {

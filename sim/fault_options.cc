@@ -1,6 +1,7 @@
 #include "sim/fault_options.h"
 
 #include <cmath>
+#include <utility>
 
 #include "core/format.h"
 
@@ -48,24 +49,14 @@ std::string ValidateFaultOptions(const FaultOptions& options, double gravity_mps
     return "quantization.accel_lsb_mps2: 0 (no quantization) or at least 1e-06 m/s^2";
   if (q.gyro_lsb_dps > 0.0 && q.gyro_lsb_dps < kMinQuantizationLsb)
     return "quantization.gyro_lsb_dps: 0 (no quantization) or at least 1e-06 deg/s";
-  const ScaleMisalignmentOptions& m = options.scale;
-  struct Limited {
-    const char* name;
-    const std::vector<double>* values;
-    double limit;  // largest magnitude (a small-error model)
-    const char* unit;
-  };
-  const Limited vectors[] = {{"accel_scale", &m.accel_scale, 0.5, ""},
-                             {"gyro_scale", &m.gyro_scale, 0.5, ""},
-                             {"accel_misalignment_deg", &m.accel_misalignment_deg, 10.0, " deg"},
-                             {"gyro_misalignment_deg", &m.gyro_misalignment_deg, 10.0, " deg"}};
-  for (const Limited& v : vectors) {
-    if (v.values->size() != 3) return std::string("scale.") + v.name + ": expected 3 numbers (x, y, z)";
-    for (const double x : *v.values)
-      if (!std::isfinite(x) || std::abs(x) > v.limit)
-        return std::string("scale.") + v.name + ": each value must be finite and at most " +
-               FormatDouble(v.limit) + v.unit + " in magnitude";
-  }
+  const ScaleMisalignmentOptions& m = options.scale;  // each value is bounded with its key
+  const std::pair<const char*, const std::vector<double>*> vectors[] = {
+      {"accel_scale", &m.accel_scale},
+      {"gyro_scale", &m.gyro_scale},
+      {"accel_misalignment_deg", &m.accel_misalignment_deg},
+      {"gyro_misalignment_deg", &m.gyro_misalignment_deg}};
+  for (const auto& [name, values] : vectors)
+    if (values->size() != 3) return std::string("scale.") + name + ": expected 3 numbers (x, y, z)";
   return "";
 }
 

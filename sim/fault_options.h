@@ -62,6 +62,10 @@ struct QuantizationOptions {
 // N_yz = N_zy = misalignment[0], N_zx = misalignment[1], N_xy = misalignment[2] (non-orthogonal axes; a
 // rotation of the whole triad would be a mounting error, which vigil's camera-IMU extrinsics already carry).
 struct ScaleMisalignmentOptions {
+  // The largest errors of this small-error model.
+  static constexpr double kMaxScaleError = 0.5;
+  static constexpr double kMaxMisalignment_deg = 10.0;
+
   std::vector<double> accel_scale = {0.0, 0.0, 0.0};             // scale-factor error per axis [fraction]
   std::vector<double> gyro_scale = {0.0, 0.0, 0.0};              // [fraction]
   std::vector<double> accel_misalignment_deg = {0.0, 0.0, 0.0};  // yz, zx, xy [deg]
@@ -72,15 +76,15 @@ struct ScaleMisalignmentOptions {
     using config::Bounds;
     v.Field("accel_scale", accel_scale,
             "accelerometer scale-factor error per axis x, y, z (3 numbers; 0.01 = +1 %) [fraction]",
-            Bounds::Closed(-1.0, 1.0));
+            Bounds::Closed(-kMaxScaleError, kMaxScaleError));
     v.Field("gyro_scale", gyro_scale, "gyro scale-factor error per axis x, y, z (3 numbers) [fraction]",
-            Bounds::Closed(-1.0, 1.0));
+            Bounds::Closed(-kMaxScaleError, kMaxScaleError));
     v.Field("accel_misalignment_deg", accel_misalignment_deg,
             "accelerometer axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]",
-            Bounds::Closed(-45.0, 45.0));
+            Bounds::Closed(-kMaxMisalignment_deg, kMaxMisalignment_deg));
     v.Field("gyro_misalignment_deg", gyro_misalignment_deg,
             "gyro axis non-orthogonality of the pairs yz, zx, xy (3 numbers) [deg]",
-            Bounds::Closed(-45.0, 45.0));
+            Bounds::Closed(-kMaxMisalignment_deg, kMaxMisalignment_deg));
   }
 };
 

@@ -130,7 +130,7 @@ RecordedWindow ReadRecordedWindow(const SimOptions& options) {
     throw InputError("duration_s: the semi-real window (imu.recording_start_s " +
                      FormatDouble(options.imu.recording_start_s) + " s + duration_s " +
                      FormatDouble(options.duration_s) + " s) ends after the recording's ground truth (" +
-                     FormatDouble(NsToS(gt1 - gt0)) + " s long, " + dir.string() + ")");
+                     FormatPrintf("%.3f", NsToS(gt1 - gt0)) + " s long, " + dir.string() + ")");
   RecordedWindow w;
   for (const NavState& s : gt)
     if (s.t_ns >= start_ns && s.t_ns <= end_ns) w.groundtruth.push_back(s);

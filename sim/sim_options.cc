@@ -12,27 +12,18 @@ void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* opt
     *file = ResolveInputPath(base_dir, *file);  // "$VIGIL_DATA" while unset: ValidateSimOptions says so
 }
 
-// Shorter recordings have too few samples and frames for a run to read them.
-constexpr double kMinDuration_s = 0.5;
-
 void ValidateSimOptions(const SimOptions& options, const std::string& origin) {
   for (const auto& [key, file] : {std::pair{"trajectory.waypoints_file", &options.trajectory.waypoints_file},
                                   std::pair{"trajectory.recording", &options.trajectory.recording},
                                   std::pair{"imu.recording", &options.imu.recording}})
     if (const std::string why = UnsetDataDirReason(*file); !why.empty())
       throw InputError(origin + ": " + key + ": " + why);
-  if (!(options.duration_s >= kMinDuration_s)) {
-    // 0 was resolved to the trajectory's own length when it has one (ResolveDurationToEnd).
-    const TrajectoryOptions& t = options.trajectory;
-    const char* file = t.type == TrajectoryType::kWaypoints && !t.waypoints_file.empty() ? "waypoints_file"
-                       : t.type == TrajectoryType::kRecording && !t.recording.empty()    ? "recording"
-                                                                                         : nullptr;
-    throw InputError(
-        origin + ": duration_s: must be at least 0.5 s, got " + FormatDouble(options.duration_s) + " s" +
-        (file ? std::string(" (0 runs to the end of trajectory.") + file + ", which is shorter than that)"
-              : std::string(" (0, to the end of the trajectory, needs trajectory.type waypoints "
-                            "or recording)")));
-  }
+  if (!(options.duration_s >= kMinDuration_s))  // 0 kept: a trajectory without an end (ResolveDurationToEnd)
+    throw InputError(origin + ": duration_s: must be at least " + FormatDouble(kMinDuration_s) + " s, got " +
+                     FormatDouble(options.duration_s) + " s" +
+                     (options.duration_s == 0.0 ? " (0, to the end of the trajectory, needs trajectory.type "
+                                                  "waypoints or recording)"
+                                                : ""));
   const std::string camera = options.camera.Validate();
   if (!camera.empty()) throw InputError(origin + ": camera." + camera);
   if (options.glitch.enabled && options.glitch.axes.empty())

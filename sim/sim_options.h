@@ -278,11 +278,15 @@ void ResolveRelativePaths(const std::filesystem::path& base_dir, SimOptions* opt
 
 // duration_s: 0 means "to the end of the trajectory": replaces it by the span of the waypoints or the
 // recording (reading only their timestamps). Other values, and trajectories without an end, are left alone
-// (ValidateSimOptions then refuses 0). Throws InputError "trajectory.<key>: file:line: reason".
+// (ValidateSimOptions then refuses 0). Throws InputError "trajectory.<key>: file:line: reason", or
+// "duration_s: reason" when that span is shorter than kMinDuration_s.
 void ResolveDurationToEnd(SimOptions* options);
 
 // Longest recording the simulator accepts (it is held in memory): 1e7 IMU samples, 14 h at 200 Hz.
 inline constexpr double kMaxImuSamples = 1e7;
+
+// Shortest duration_s: shorter recordings have too few samples and frames for a run to read them.
+inline constexpr double kMinDuration_s = 0.5;
 
 // Cross-field checks that single keys' bounds cannot express; throws InputError("<origin>: key: reason").
 void ValidateSimOptions(const SimOptions& options, const std::string& origin);

@@ -72,6 +72,11 @@ void ResolveDurationToEnd(SimOptions* options) {
   } catch (const InputError& e) {
     throw InputError(std::string("trajectory.recording: ") + e.what());
   }
+  if (options->duration_s != 0.0 && options->duration_s < kMinDuration_s)
+    throw InputError("duration_s: 0 runs to the end of trajectory." +
+                     std::string(t.type == TrajectoryType::kWaypoints ? "waypoints_file" : "recording") +
+                     ", which is " + FormatPrintf("%.3f", options->duration_s) +
+                     " s long: a run needs at least " + FormatDouble(kMinDuration_s) + " s");
 }
 
 std::unique_ptr<TrajectoryModel> MakeTrajectoryModel(const TrajectoryOptions& options, double duration_s) {

@@ -1,5 +1,6 @@
 #include "experiments/commands/run_command.h"
 
+#include "core/error.h"
 #include "core/output.h"
 #include "core/recording_files.h"
 #include "experiments/runs/external_estimator.h"
@@ -19,7 +20,12 @@ nlohmann::json RunToDirectory(const std::string& config_path, const std::vector<
   for (const std::filesystem::path& input : RecordingInputPaths(options.dataset_dir)) inputs.push_back(input);
   RefuseOutputOverInputs(dir, inputs);
   StagedDirectory out(dir, force);
-  const nlohmann::json metrics = ExecuteRun(config, options, out.path());
+  nlohmann::json metrics;
+  try {
+    metrics = ExecuteRun(config, options, out.path());
+  } catch (const InputError& e) {
+    RethrowLocated(config_path, overrides, e);
+  }
   out.Commit();
   return metrics;
 }

@@ -38,7 +38,11 @@ RunConfig LoadRunConfig(const std::string& path, const std::vector<std::string>&
   // An IMU preset provides defaults: load again over its figures, so the keys the config writes still win.
   if (config.sim.imu.preset != sim::ImuPreset::kNone)
     config = LoadLayers(path, overrides, config.sim.imu.preset);
-  sim::ResolveDurationToEnd(&config.sim);
+  try {
+    sim::ResolveDurationToEnd(&config.sim);
+  } catch (const InputError& e) {
+    RethrowLocated(path, overrides, e);
+  }
   const std::string origin = path.empty() ? "--set" : path;
   try {
     ValidateRunConfig(config, origin);
@@ -120,6 +124,21 @@ InputError LocatedConfigError(const std::string& path, const std::vector<std::st
       if (const int line = config::KeyLine(root, key); line > 0) return InputError(Located(path, line, rest));
   }
   return InputError(origin + ": " + problem);
+}
+
+bool IsRunConfigKey(const std::string& key) {
+  static const std::vector<config::KeyDoc> keys = [] {
+    RunConfig defaults;
+    return config::DescribeKeys(defaults);
+  }();
+  return std::any_of(keys.begin(), keys.end(), [&](const config::KeyDoc& k) { return k.path == key; });
+}
+
+void RethrowLocated(const std::string& path, const std::vector<std::string>& overrides,
+                    const InputError& error) {
+  const std::string message = error.what();
+  if (!IsRunConfigKey(message.substr(0, message.find(": ")))) throw error;
+  throw LocatedConfigError(path, overrides, message);
 }
 
 namespace {

@@ -81,6 +81,15 @@ std::vector<std::string> KeysOfConfigError(const std::string& message, const std
 InputError LocatedConfigError(const std::string& path, const std::vector<std::string>& overrides,
                               const std::string& problem);
 
+// Whether `key` ("section.name") is a key of RunConfig.
+bool IsRunConfigKey(const std::string& key);
+
+// Rethrows `error` located as LocatedConfigError does when its message is "key: reason" for a RunConfig key
+// (a value found wrong only once the run reads its inputs: duration_s beyond a recording's end, a spline too
+// fine for it), else as it is.
+[[noreturn]] void RethrowLocated(const std::string& path, const std::vector<std::string>& overrides,
+                                 const InputError& error);
+
 // The files a run with `config` reads besides its config file (waypoints, DTW templates, calibration
 // dataset): what its output must not overwrite (core/output.h RefuseOutputOverInputs).
 std::vector<std::filesystem::path> RunConfigInputs(const RunConfig& config);

@@ -121,15 +121,18 @@ std::string RunSummaryLine(const nlohmann::json& m) {
   }
   const nlohmann::json& ate = m.at("ate");
   // An alignment without the motion to define it has no ATE (evaluation_options.h); older files lack the key.
-  if (ate.value("alignment_defined", true))
-    std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)",
-                  evaluation::MetricNumber(ate, {"trans_m", "rmse"}),
-                  ate.at("align").get<std::string>().c_str(),
-                  100.0 * evaluation::MetricNumber(m, {"coverage"}));
-  else
+  const double ate_m = evaluation::MetricNumber(ate, {"trans_m", "rmse"});
+  if (!ate.value("alignment_defined", true))
     std::snprintf(buf, sizeof(buf), ": no ATE (%s alignment undefined over %.3f m, coverage %.1f %%)",
                   ate.at("align").get<std::string>().c_str(),
                   evaluation::MetricNumber(ate, {"alignment_extent_m"}),
+                  100.0 * evaluation::MetricNumber(m, {"coverage"}));
+  else if (!std::isfinite(ate_m))  // nothing matched (a failed run's empty trajectory)
+    std::snprintf(buf, sizeof(buf), ": no ATE (coverage %.1f %%)",
+                  100.0 * evaluation::MetricNumber(m, {"coverage"}));
+  else
+    std::snprintf(buf, sizeof(buf), ": ATE RMSE %.4f m (%s, coverage %.1f %%)", ate_m,
+                  ate.at("align").get<std::string>().c_str(),
                   100.0 * evaluation::MetricNumber(m, {"coverage"}));
   s += buf;
   if (!m.at("relative").empty()) {

@@ -242,6 +242,32 @@ TEST_F(ReliabilityCli, WhatSimulateAcceptsRunAccepts) {
   }
 }
 
+// A value found wrong only once the run reads its recording (duration_s past its end, a spline too fine for
+// it) is located as a config error is: the --set that gave it, else its line in the file.
+TEST_F(ReliabilityCli, ProblemsFoundInTheRecordingNameTheSetOrTheLine) {
+  tmp_.File("gt.txt", "0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n");
+  const std::string config =
+      tmp_.File("c.yaml", "seed: 1\nduration_s: 5\ntrajectory:\n  type: recording\n  recording: gt.txt\n");
+  for (const char* command : {"run", "simulate"}) {
+    const std::string out = " -o " + Path(std::string(command) + "_out");
+    Expect(std::string(command) + " " + config + out, 2,
+           config + ":2: duration_s: 5 s exceeds the end of the trajectory (1 s)");
+    Expect(std::string(command) + " " + config + " --set duration_s=4" + out, 2,
+           "--set duration_s=4: duration_s: 4 s exceeds the end of the trajectory (1 s)");
+    Expect(std::string(command) + " " + config +
+               " --set duration_s=1 --set trajectory.spline.knot_spacing_s=1e-9" + out,
+           2, "--set trajectory.spline.knot_spacing_s=1e-9: trajectory.spline.knot_spacing_s: 1e-09 s over");
+    // duration_s: 0 runs to the end of a recording shorter than a run: said as such, at the line.
+    tmp_.File("short.txt", "0 0 0 0 0 0 0 1\n0.3 1 0 0 0 0 0 1\n");
+    Expect(std::string(command) + " " + config + " --set trajectory.recording=" + Path("short.txt") +
+               " --set duration_s=0" + out,
+           2,
+           "--set duration_s=0: duration_s: 0 runs to the end of trajectory.recording, which is 0.300 s "
+           "long: a run needs at least 0.5 s");
+    EXPECT_FALSE(fs::exists(Path(std::string(command) + "_out")));
+  }
+}
+
 TEST_F(ReliabilityCli, PlotRunRefusesADatasetDirectory) {
   const std::string config = tmp_.File("c.yaml", "duration_s: 1\n");
   ASSERT_EQ(Vigil(tmp_, "simulate " + config + " -o " + Path("ds")).status, 0);

@@ -181,6 +181,14 @@ TEST(ImuFaults, OutOfRangeParametersAreConfigErrors) {
   EXPECT_NE(error({"faults.scale.accel_scale=[0.1]"}).find("faults.scale.accel_scale: expected 3"),
             std::string::npos);
   EXPECT_EQ(error({"faults.saturation.accel_range_g=16", "faults.saturation.gyro_range_dps=2000"}), "");
+  // The scale model's limits are the keys' documented bounds (configs/README.md), not a later check's.
+  EXPECT_EQ(error({"faults.scale.accel_scale=[0.6, 0, 0]"}),
+            "--set: faults.scale.accel_scale: must be in [-0.5, 0.5]");
+  EXPECT_EQ(error({"faults.scale.gyro_misalignment_deg=[0, 10.5, 0]"}),
+            "--set: faults.scale.gyro_misalignment_deg: must be in [-10, 10]");
+  EXPECT_EQ(
+      error({"faults.scale.accel_scale=[0.5, -0.5, 0]", "faults.scale.accel_misalignment_deg=[10, -10, 0]"}),
+      "");
 }
 
 }  // namespace

@@ -282,14 +282,18 @@ TEST(RecordedTrajectory, DurationZeroRunsToTheEndOfTheRecording) {
   EXPECT_EQ(InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
             "c.yaml: duration_s: must be at least 0.5 s, got 0 s (0, to the end of the trajectory, needs "
             "trajectory.type waypoints or recording)");
-  // A recording shorter than a run: 0 ran to its end, and the message says so instead of asking for the
-  // trajectory type the config already has.
+  // An explicit value too short is only that; 0 on a recording shorter than a run is said as such (the
+  // type the config already has is not asked for).
   o.trajectory.type = TrajectoryType::kRecording;
   o.duration_s = 0.2;
-  EXPECT_EQ(
-      InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
-      "c.yaml: duration_s: must be at least 0.5 s, got 0.2 s (0 runs to the end of trajectory.recording, "
-      "which is shorter than that)");
+  EXPECT_EQ(InputErrorOf([&] { ValidateSimOptions(o, "c.yaml"); }),
+            "c.yaml: duration_s: must be at least 0.5 s, got 0.2 s");
+  TempDir tmp;
+  o.trajectory.recording = tmp.File("short.txt", "0 0 0 0 0 0 0 1\n0.3 1 0 0 0 0 0 1\n");
+  o.duration_s = 0.0;
+  EXPECT_EQ(InputErrorOf([&] { ResolveDurationToEnd(&o); }),
+            "duration_s: 0 runs to the end of trajectory.recording, which is 0.300 s long: a run needs at "
+            "least 0.5 s");
 }
 
 // The whole V1_01 ground truth (2,895 poses at 20 Hz, 145 s; roll near +-pi throughout). Measured: position
