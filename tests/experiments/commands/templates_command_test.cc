@@ -50,7 +50,7 @@ TEST(BuildTemplateLibraryFile, WarnsBeforeTakingImuCsvAsClean) {
   TemplatesRequest request;
   request.dataset = (tmp.path() / "rec").string();
   request.output = (tmp.path() / "templates.yaml").string();
-  request.overrides = {"detector.dtw.templates=100000"};  // too many for 6 s: fails after the warning
+  request.overrides = {"detector.dtw.templates=1000"};  // too many for 6 s: fails after the warning
   std::string report;
   request.report = [&](const std::string& lines) { report += lines; };
   const std::string error = InputErrorOf([&] { BuildTemplateLibraryFile(request); });
