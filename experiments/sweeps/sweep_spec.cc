@@ -421,7 +421,11 @@ RunConfig ResolveCellConfig(const SweepSpec& spec, const SweepCell& cell) {
   RunConfig config = LoadRunConfig(spec.base.string());
   for (const SweepOverride* o : CellOverrides(spec, cell)) Apply(spec.path, *o, &config);
   ResolveRelativePaths(fs::path(spec.path).parent_path(), &config);
-  sim::ResolveDurationToEnd(&config.sim);
+  try {
+    sim::ResolveDurationToEnd(&config.sim);  // "duration_s: 0 runs to the end of ...": the cell's line
+  } catch (const InputError& e) {
+    ThrowCellError(spec, cell, e.what());
+  }
   const std::string origin = CellOrigin(spec, cell);
   try {
     ValidateRunConfig(config, origin);

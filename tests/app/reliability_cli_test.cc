@@ -266,6 +266,16 @@ TEST_F(ReliabilityCli, ProblemsFoundInTheRecordingNameTheSetOrTheLine) {
            "long: a run needs at least 0.5 s");
     EXPECT_FALSE(fs::exists(Path(std::string(command) + "_out")));
   }
+  // In a sweep, the line of the sweep file that set it, and the cell.
+  tmp_.File("short_base.yaml",
+            "seed: 1\nduration_s: 1\ntrajectory:\n  type: recording\n  recording: short.txt\n");
+  const std::string sweep = tmp_.File(
+      "s.yaml", "base: short_base.yaml\nset:\n  duration_s: 0\nmethods: {original: none}\nseeds: [1]\n");
+  const CliResult r =
+      Expect("sweep " + sweep + " -o " + Path("sweep_out"), 2,
+             sweep + ":3: duration_s: 0 runs to the end of trajectory.recording, which is 0.300 s");
+  EXPECT_NE(r.err.find("(cell "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(Path("sweep_out")));
 }
 
 TEST_F(ReliabilityCli, PlotRunRefusesADatasetDirectory) {
