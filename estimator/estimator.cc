@@ -93,17 +93,27 @@ CameraPoseLookup Estimator::CameraPoses() const {
   };
 }
 
-void Estimator::Predict(Frame* frame) const {
-  const Frame& prev = *window_.back();
-  const NavState s = prev.State();
-  const Preintegration& pre = *frame->imu_from_prev;
+NavState Estimator::Propagate(const NavState& s, const Preintegration& pre, int64_t t_ns) const {
   const double T = pre.sum_dt_s();
   NavState next = s;
-  next.t_ns = frame->t_ns;
+  next.t_ns = t_ns;
   next.p_W = s.p_W + s.v_W * T + 0.5 * g_W_ * T * T + s.q_WB * pre.delta_p();
   next.v_W = s.v_W + g_W_ * T + s.q_WB * pre.delta_v();
   next.q_WB = (s.q_WB * pre.delta_q()).normalized();
-  frame->SetState(next);
+  return next;
+}
+
+void Estimator::Predict(Frame* frame) const {
+  frame->SetState(Propagate(window_.back()->State(), *frame->imu_from_prev, frame->t_ns));
+}
+
+NavState Estimator::PredictedState(int64_t t_ns, const ImuStream& imu,
+                                   const std::vector<double>* imu_variance_scale) const {
+  const NavState s = newest_state();
+  if (t_ns <= s.t_ns) return s;
+  return Propagate(
+      s, PreintegrateInterval(imu, s.t_ns, t_ns, s.b_a, s.b_g, noise_, imu_rate_hz_, imu_variance_scale),
+      t_ns);
 }
 
 FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2d>& features_n,

@@ -65,6 +65,10 @@ class Estimator {
                        const std::vector<double>* imu_variance_scale = nullptr);
 
   NavState newest_state() const;
+  // The newest state carried to t_ns (after the newest frame, covered by `imu`) by the IMU with the newest
+  // biases, as the next frame's solve starts from it; valid once initialized (solved_frames.h).
+  NavState PredictedState(int64_t t_ns, const ImuStream& imu,
+                          const std::vector<double>* imu_variance_scale = nullptr) const;
   // The newest state's pose covariance (pose_covariance.h) after the frame AddFrame returned kTracking for;
   // empty when options.pose_covariance is off or it could not be computed.
   const std::optional<Matrix6d>& newest_pose_covariance() const { return newest_pose_covariance_; }
@@ -106,6 +110,8 @@ class Estimator {
   // compensated when options_.window.parallax_compensates_rotation and the window has states.
   double KeyframeParallax(const Frame& older, const Frame& newer) const;
   void Predict(Frame* frame) const;
+  // `s` carried over the interval `pre` integrates (its end at t_ns).
+  NavState Propagate(const NavState& s, const Preintegration& pre, int64_t t_ns) const;
   // Builds and solves the window problem; false with a reason when the solver fails.
   bool Optimize(bool marginalize_oldest_next, std::string* reason);
   // Optimize's steps (estimator_optimize.cc), in the order it takes them.

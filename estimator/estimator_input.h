@@ -88,21 +88,24 @@ struct EstimatorTiming {
 struct EstimatorResult {
   bool ok = true;  // false: diverged or failed; `failure_reason` says why
   std::string failure_reason;
-  // One state per camera frame after initialization (the newest window state when that frame was processed),
-  // never NaN/Inf. Trajectory rows are the same poses.
+  // One state per camera frame after initialization: the newest window state when that frame was solved, or
+  // the IMU's prediction from the last solved one (EstimatorOptions::max_frame_rate_hz); never NaN/Inf.
+  // Trajectory rows are the same poses.
   std::vector<NavState> states;
   Trajectory trajectory;
   // One per trajectory row when options.pose_covariance (else empty): the pose's covariance in its tangent
-  // [delta p_W, delta theta_B] (pose_covariance.h); rows whose covariance could not be computed are NaN.
+  // [delta p_W, delta theta_B] (pose_covariance.h); rows whose covariance could not be computed, and the
+  // predicted frames' rows, are NaN.
   std::vector<Eigen::Matrix<double, 6, 6>> pose_covariances;
   double initialized_at_s =
       std::numeric_limits<double>::quiet_NaN();  // first successful init, s after the first IMU sample
   int resets = 0;  // failure-detection resets (each followed by re-initialization)
   int stops = 0;   // failure-detection stops (1 when a failure ended the run, else 0)
   std::map<std::string, int> failure_checks;  // resets + stops by the check that fired (Estimator)
-  int frames = 0;                             // camera frames processed
-  int keyframes = 0;                          // frames kept as keyframes (oldest marginalized)
-  int marginalization_failures = 0;           // failed marginalizations: the prior was dropped each time
+  int frames = 0;                             // camera frames processed (solved or predicted)
+  int solved_frames = 0;  // camera frames the window was solved at (EstimatorOptions::max_frame_rate_hz)
+  int keyframes = 0;      // frames kept as keyframes (oldest marginalized)
+  int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time
   EstimatorTiming timing;
   MitigationStats mitigation;
   RestNoise rest_noise;

@@ -275,6 +275,14 @@ struct EstimatorOptions {
   MitigationOptions mitigation;
   ZeroVelocityOptions zero_velocity;
   bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
+  // Once it tracks, the estimator solves at most this many camera frames per second (0: every frame, the
+  // default). A frame is solved when at least 0.9 of the period has passed since the last solved one; the
+  // frames between are output as the IMU's prediction from the newest solved state, without a covariance
+  // (solved_frames.h). VINS-Mono's EuRoC configuration feeds its estimator 10 frames per second of the
+  // camera's 20 (`freq: 10`). Measured at 10 (docs/results/2026-12-estimator-speed.md, "Fifth round"): the
+  // paper scenario's ATE as at every frame at 0.5x the CPU, but the predicted poses carry the IMU's noise
+  // between solves and the CI gate's glitch cells regress, so it is not the default.
+  double max_frame_rate_hz = 0.0;
 
   template <class V>
   void Visit(V& v) {
@@ -298,6 +306,11 @@ struct EstimatorOptions {
     v.Field("pose_covariance", pose_covariance,
             "compute each output pose's covariance (the marginal of the newest frame of the window, relative "
             "to the position and yaw of the run's first frame) for the NEES");
+    v.Field(
+        "max_frame_rate_hz", max_frame_rate_hz,
+        "once tracking, solve at most this many camera frames per second; the frames between are output as "
+        "the IMU's prediction from the newest solved state, without a covariance (0: every frame) [Hz]",
+        config::Bounds::NonNegative());
   }
 };
 

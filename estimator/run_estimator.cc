@@ -4,6 +4,7 @@
 #include <exception>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -14,6 +15,7 @@
 #include "estimator/init_diagnosis.h"
 #include "estimator/make_initializer.h"
 #include "estimator/rest_noise.h"
+#include "estimator/solved_frames.h"
 
 namespace vigil::estimator {
 namespace {
@@ -79,25 +81,36 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   result.mitigation.repeated_timestamps = deduplicated.repeated;
   result.mitigation.inflated_samples = trust.inflated_samples;
   result.mitigation.clipped_samples = trust.clipped_samples;
+  const auto output = [&](const NavState& state, const std::optional<Matrix6d>& covariance) {
+    result.states.push_back(state);
+    result.trajectory.push_back(StampedPose{state.t_ns, state.p_W, state.q_WB});
+    if (options.pose_covariance)
+      result.pose_covariances.push_back(
+          covariance.value_or(Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN())));
+  };
   try {
+    bool tracking = false;  // the newest solved frame was tracked
+    int64_t last_solved_ns = 0;
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
+      if (tracking && !RateAllowsSolve(last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
+        output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
+        continue;
+      }
+      ++result.solved_frames;
+      last_solved_ns = frame.t_ns;
       const FrameStatus status =
           estimator.AddFrame(frame.t_ns, NormalizedFeatures(frame, input.camera), imu, &trust.variance_scale);
+      tracking = status == FrameStatus::kTracking;
       if (status == FrameStatus::kFailed) {
         result.ok = false;
         result.stops = 1;
         result.failure_reason = estimator.failure_reason();
         break;
       }
-      if (status != FrameStatus::kTracking) continue;
-      const NavState state = estimator.newest_state();
-      result.states.push_back(state);
-      result.trajectory.push_back(StampedPose{state.t_ns, state.p_W, state.q_WB});
-      if (options.pose_covariance)
-        result.pose_covariances.push_back(estimator.newest_pose_covariance().value_or(
-            Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN())));
+      if (!tracking) continue;
+      output(estimator.newest_state(), estimator.newest_pose_covariance());
       if (!after_tracked_frame(estimator)) break;
     }
   } catch (const std::exception& e) {

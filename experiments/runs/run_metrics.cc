@@ -54,6 +54,7 @@ nlohmann::json RunMetricsJson(const RunSummary& summary, const estimator::Estima
                     {"stops", result.stops},
                     {"failure_checks", result.failure_checks},
                     {"frames", result.frames},
+                    {"solved_frames", result.solved_frames},
                     {"keyframes", result.keyframes},
                     {"marginalization_failures", result.marginalization_failures},
                     {"output_poses", result.trajectory.size()},
@@ -97,8 +98,8 @@ void DescribeExternalEstimator(nlohmann::json* metrics) {
   nlohmann::json& e = (*metrics)["estimator"];
   e["backend"] = "external";
   e["init"] = "external";
-  for (const char* key : {"resets", "stops", "failure_checks", "keyframes", "marginalization_failures",
-                          "timing", "mitigation", "imu_noise_at_rest"})
+  for (const char* key : {"resets", "stops", "failure_checks", "solved_frames", "keyframes",
+                          "marginalization_failures", "timing", "mitigation", "imu_noise_at_rest"})
     e[key] = nullptr;
 }
 

@@ -1,0 +1,21 @@
+// Which camera frames the estimator solves once it tracks (EstimatorOptions::max_frame_rate_hz).
+//
+// Solving every frame of a 20-30 Hz camera buys little: the window's states are relinearized at every solve
+// anyway, and the frames between keyframes leave the window again. VINS-Mono's EuRoC configuration feeds its
+// estimator 10 frames per second (`freq: 10`). Until the estimator tracks, every frame is solved, so the
+// initialization fills its window at the camera's rate as before. The frames left out still get a pose, the
+// IMU's prediction from the newest solved state (Estimator::PredictedState), so a run's trajectory keeps the
+// camera's rate.
+#pragma once
+
+#include <cstdint>
+
+namespace vigil::estimator {
+
+// Whether a tracking estimator solves the frame at t_ns, the last frame it solved at last_solved_ns: when at
+// least 0.9 / max_rate_hz has passed (always when max_rate_hz is 0). The 0.9 keeps a camera's jitter from
+// skipping a frame the rate allows: a 30 Hz camera at 10 Hz gives every third frame, a 20 Hz camera every
+// second one.
+bool RateAllowsSolve(int64_t last_solved_ns, int64_t t_ns, double max_rate_hz);
+
+}  // namespace vigil::estimator

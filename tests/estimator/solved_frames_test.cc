@@ -1,0 +1,84 @@
+// Which frames the estimator solves under max_frame_rate_hz, and the poses it gives the frames between.
+#include "estimator/solved_frames.h"
+
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "core/interpolation.h"
+#include "estimator/run_estimator.h"
+#include "tests/estimator/sim_run.h"
+
+namespace vigil::estimator {
+namespace {
+
+// The frames a tracking estimator solves from a camera at camera_hz: every frame, then each the cap allows.
+std::vector<int> Solved(double camera_hz, int count, double max_rate_hz, int64_t jitter_ns = 0) {
+  std::vector<int> solved{0};
+  int64_t last_ns = 0;
+  for (int k = 1; k < count; ++k) {
+    const int64_t t_ns = static_cast<int64_t>(k * 1e9 / camera_hz) + (k % 2 == 0 ? jitter_ns : -jitter_ns);
+    if (!RateAllowsSolve(last_ns, t_ns, max_rate_hz)) continue;
+    last_ns = t_ns;
+    solved.push_back(k);
+  }
+  return solved;
+}
+
+TEST(SolvedFrames, TheRateCapTakesEveryNthFrameOfARegularCamera) {
+  EXPECT_EQ(Solved(30.0, 10, 10.0), (std::vector<int>{0, 3, 6, 9}));
+  EXPECT_EQ(Solved(20.0, 7, 10.0), (std::vector<int>{0, 2, 4, 6}));
+  // 2 ms of jitter either way does not make a 30 Hz camera skip a frame the 10 Hz cap allows.
+  EXPECT_EQ(Solved(30.0, 10, 10.0, 2'000'000), (std::vector<int>{0, 3, 6, 9}));
+  // A 25 Hz camera at 10 Hz: every third frame (8.3 Hz), never two 40 ms apart.
+  EXPECT_EQ(Solved(25.0, 8, 10.0), (std::vector<int>{0, 3, 6}));
+  // A cap above the camera's rate, and no cap, take every frame.
+  EXPECT_EQ(Solved(20.0, 4, 30.0), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(Solved(30.0, 4, 0.0), (std::vector<int>{0, 1, 2, 3}));
+}
+
+// A short paper run at a cap of 10 of the camera's 30 frames per second once tracking: every frame
+// from the first tracked one on has a pose, the solved ones a covariance, and each predicted pose is within a
+// centimetre of the error of the solved pose it was predicted from, so the prediction carries the state with
+// the right time, gravity and biases.
+TEST(SolvedFrames, FramesBetweenSolvedOnesGetTheImusPrediction) {
+  sim::SimOptions sim_options;
+  sim_options.duration_s = 6.0;
+  const Dataset data = sim::Simulate(sim_options, 3);
+  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 3);
+  EstimatorOptions options;
+  options.max_frame_rate_hz = 10.0;
+  const EstimatorResult result = RunEstimator(options, input);
+  ASSERT_TRUE(result.ok) << result.failure_reason;
+  EXPECT_EQ(result.frames, static_cast<int>(input.frames.size()));
+  ASSERT_FALSE(result.trajectory.empty());
+  // From the first tracked frame on, one row per camera frame, and every third one solved.
+  std::size_t first = 0;
+  while (input.frames[first].t_ns < result.trajectory.front().t_ns) ++first;
+  ASSERT_EQ(result.trajectory.size(), input.frames.size() - first);
+  std::set<int64_t> solved_ns;
+  for (std::size_t k = first; k < input.frames.size(); k += 3) solved_ns.insert(input.frames[k].t_ns);
+  EXPECT_EQ(result.solved_frames, static_cast<int>(first + solved_ns.size()));
+  ASSERT_EQ(result.pose_covariances.size(), result.trajectory.size());
+  int predicted = 0;
+  Eigen::Vector3d solved_error = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < result.trajectory.size(); ++i) {
+    const StampedPose& pose = result.trajectory[i];
+    EXPECT_EQ(pose.t_ns, input.frames[first + i].t_ns);
+    NavState truth;
+    ASSERT_TRUE(InterpolateNavState(data.groundtruth, pose.t_ns, &truth));
+    const Eigen::Vector3d error = pose.p_W - truth.p_W;
+    if (solved_ns.count(pose.t_ns)) {
+      EXPECT_TRUE(result.pose_covariances[i].allFinite()) << "solved row " << i;
+      solved_error = error;
+    } else {
+      ++predicted;
+      EXPECT_TRUE(result.pose_covariances[i].array().isNaN().all()) << "predicted row " << i;
+      EXPECT_LT((error - solved_error).norm(), 0.01) << "predicted row " << i;
+    }
+  }
+  EXPECT_GT(predicted, static_cast<int>(result.trajectory.size()) / 2);
+}
+
+}  // namespace
+}  // namespace vigil::estimator
