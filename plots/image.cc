@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/output.h"
+#include "core/png/png_encode.h"
 
 namespace vigil::plots {
 namespace {
@@ -20,12 +21,6 @@ void PngError(png_structp png, png_const_charp message) {
   png_longjmp(png, 1);
 }
 void PngWarning(png_structp, png_const_charp) {}
-
-void AppendToString(png_structp png, png_bytep data, png_size_t length) {
-  auto* out = static_cast<std::string*>(png_get_io_ptr(png));
-  out->append(reinterpret_cast<const char*>(data), length);
-}
-void FlushNothing(png_structp) {}
 
 struct ReadCursor {
   const std::string* bytes;
@@ -53,31 +48,14 @@ void Image::Blend(int x, int y, const Color& color, float coverage) {
 
 std::string EncodePng(const Image& image) {
   if (image.width <= 0 || image.height <= 0) throw std::runtime_error("png: empty image");
-  std::string out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, PngError, PngWarning);
-  if (png == nullptr) throw std::runtime_error("png: cannot create writer");
-  png_infop info = png_create_info_struct(png);
-  std::vector<uint8_t> row(static_cast<std::size_t>(image.width) * 3);
-  if (info == nullptr || setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("png: cannot encode: " + g_png_error);
+  std::vector<uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
+  for (int y = 0; y < image.height; ++y) {
+    const uint8_t* src = image.Pixel(0, y);
+    uint8_t* dst = &rgb[static_cast<std::size_t>(y) * image.width * 3];
+    for (int x = 0; x < image.width; ++x) std::memcpy(dst + x * 3, src + x * 4, 3);
   }
-  {
-    png_set_write_fn(png, &out, AppendToString, FlushNothing);
-    png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_compression_level(png, 6);
-    png_set_filter(png, 0, PNG_FILTER_SUB | PNG_FILTER_UP);
-    png_write_info(png, info);
-    for (int y = 0; y < image.height; ++y) {
-      const uint8_t* src = image.Pixel(0, y);
-      for (int x = 0; x < image.width; ++x) std::memcpy(&row[x * 3], src + x * 4, 3);
-      png_write_row(png, row.data());
-    }
-    png_write_end(png, nullptr);
-  }
-  png_destroy_write_struct(&png, &info);
-  return out;
+  return EncodePng8(rgb.data(), image.width, image.height, 3, static_cast<std::size_t>(image.width) * 3,
+                    {6, PngFilters::kSubUp});
 }
 
 Image DecodePng(const std::string& bytes) {

@@ -9,11 +9,11 @@
 #include <limits>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/euroc.h"
 #include "core/output.h"
+#include "core/png/png_encode.h"
 #include "core/random.h"
 #include "gl/gl_context.h"
 #include "sim/texture.h"
@@ -212,11 +212,7 @@ std::vector<uint8_t> ImageRenderer::Render(const TrajectoryModel& motion, double
 }
 
 std::string EncodeGrayPng(const std::vector<uint8_t>& gray, int width, int height, int compression) {
-  const cv::Mat image(height, width, CV_8UC1, const_cast<uint8_t*>(gray.data()));
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, compression}))
-    throw std::runtime_error("png: cannot encode an image");
-  return std::string(bytes.begin(), bytes.end());
+  return EncodePng8(gray.data(), width, height, 1, static_cast<std::size_t>(width), {compression});
 }
 
 std::uintmax_t RenderImageSequence(const Scene& scene, const TrajectoryModel& motion, double end_s,

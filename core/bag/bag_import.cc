@@ -7,7 +7,6 @@
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "core/bag/bag_file.h"
 #include "core/bag/bag_presets.h"
@@ -19,6 +18,7 @@
 #include "core/euroc.h"
 #include "core/format.h"
 #include "core/output.h"
+#include "core/png/png_encode.h"
 #include "core/pose_checks.h"
 
 namespace vigil::bag {
@@ -117,9 +117,9 @@ class MessageSink {
       throw MessageError("image is " + std::to_string(gray.cols) + " x " + std::to_string(gray.rows) +
                          ", the camera's sensor.yaml declares " + std::to_string(camera_.width) + " x " +
                          std::to_string(camera_.height));
-    std::vector<uchar> png;
-    if (!cv::imencode(".png", gray, png)) throw std::runtime_error("png: cannot encode an image");
-    WriteFileAtomic(image_dir_ / EurocImageName(image.t_ns), std::string(png.begin(), png.end()));
+    // zlib level 1, the level OpenCV's PNG writer takes by default.
+    WriteFileAtomic(image_dir_ / EurocImageName(image.t_ns),
+                    EncodePng8(gray.ptr(), gray.cols, gray.rows, 1, gray.step, {1}));
     image_times.push_back(image.t_ns);
     encodings.insert(image.encoding);
   }

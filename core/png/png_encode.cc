@@ -1,0 +1,59 @@
+#include "core/png/png_encode.h"
+
+#include <png.h>
+
+#include <csetjmp>
+#include <stdexcept>
+
+namespace vigil {
+namespace {
+
+// libpng reports errors by longjmp to the setjmp of the calling function (exceptions must not cross C code).
+thread_local std::string g_png_error;
+void PngError(png_structp png, png_const_charp message) {
+  g_png_error = message;
+  png_longjmp(png, 1);
+}
+void PngWarning(png_structp, png_const_charp) {}
+
+void AppendToString(png_structp png, png_bytep data, png_size_t length) {
+  auto* out = static_cast<std::string*>(png_get_io_ptr(png));
+  out->append(reinterpret_cast<const char*>(data), length);
+}
+void FlushNothing(png_structp) {}
+
+}  // namespace
+
+std::string EncodePng8(const uint8_t* pixels, int width, int height, int channels,
+                       std::size_t row_stride_bytes, const PngEncoding& encoding) {
+  if (width <= 0 || height <= 0) throw std::runtime_error("png: empty image");
+  if (channels != 1 && channels != 3)
+    throw std::runtime_error("png: 1 or 3 channels, not " + std::to_string(channels));
+  if (row_stride_bytes < static_cast<std::size_t>(width) * static_cast<std::size_t>(channels))
+    throw std::runtime_error("png: rows overlap");
+  if (encoding.compression_level < 0 || encoding.compression_level > 9)
+    throw std::runtime_error("png: compression level " + std::to_string(encoding.compression_level) +
+                             " is not in 0-9");
+  std::string out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, PngError, PngWarning);
+  if (png == nullptr) throw std::runtime_error("png: cannot create writer");
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("png: cannot encode: " + g_png_error);
+  }
+  png_set_write_fn(png, &out, AppendToString, FlushNothing);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
+               channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_compression_level(png, encoding.compression_level);
+  if (encoding.filters == PngFilters::kSubUp) png_set_filter(png, 0, PNG_FILTER_SUB | PNG_FILTER_UP);
+  png_write_info(png, info);
+  for (int y = 0; y < height; ++y)
+    png_write_row(png, const_cast<png_bytep>(pixels + static_cast<std::size_t>(y) * row_stride_bytes));
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return out;
+}
+
+}  // namespace vigil
