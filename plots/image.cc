@@ -10,17 +10,10 @@
 
 #include "core/output.h"
 #include "core/png/png_encode.h"
+#include "core/png/png_errors.h"
 
 namespace vigil::plots {
 namespace {
-
-// libpng reports errors by longjmp to the setjmp of the calling function (exceptions must not cross C code).
-thread_local std::string g_png_error;
-void PngError(png_structp png, png_const_charp message) {
-  g_png_error = message;
-  png_longjmp(png, 1);
-}
-void PngWarning(png_structp, png_const_charp) {}
 
 struct ReadCursor {
   const std::string* bytes;
@@ -62,7 +55,8 @@ Image DecodePng(const std::string& bytes) {
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0) {
     throw std::runtime_error("png: not a PNG file");
   }
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, PngError, PngWarning);
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, png_errors::RecordAndJump, png_errors::Ignore);
   if (png == nullptr) throw std::runtime_error("png: cannot create reader");
   png_infop info = png_create_info_struct(png);
   ReadCursor cursor{&bytes, 0};
@@ -70,7 +64,7 @@ Image DecodePng(const std::string& bytes) {
   std::vector<png_bytep> rows;
   if (info == nullptr || setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
-    throw std::runtime_error("png: cannot decode: " + g_png_error);
+    throw std::runtime_error("png: cannot decode: " + png_errors::Last());
   }
   {
     png_set_read_fn(png, &cursor, ReadFromString);

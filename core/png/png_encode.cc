@@ -5,16 +5,10 @@
 #include <csetjmp>
 #include <stdexcept>
 
+#include "core/png/png_errors.h"
+
 namespace vigil {
 namespace {
-
-// libpng reports errors by longjmp to the setjmp of the calling function (exceptions must not cross C code).
-thread_local std::string g_png_error;
-void PngError(png_structp png, png_const_charp message) {
-  g_png_error = message;
-  png_longjmp(png, 1);
-}
-void PngWarning(png_structp, png_const_charp) {}
 
 void AppendToString(png_structp png, png_bytep data, png_size_t length) {
   auto* out = static_cast<std::string*>(png_get_io_ptr(png));
@@ -35,12 +29,13 @@ std::string EncodePng8(const uint8_t* pixels, int width, int height, int channel
     throw std::runtime_error("png: compression level " + std::to_string(encoding.compression_level) +
                              " is not in 0-9");
   std::string out;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, PngError, PngWarning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_errors::RecordAndJump, png_errors::Ignore);
   if (png == nullptr) throw std::runtime_error("png: cannot create writer");
   png_infop info = png_create_info_struct(png);
   if (info == nullptr || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error("png: cannot encode: " + g_png_error);
+    throw std::runtime_error("png: cannot encode: " + png_errors::Last());
   }
   png_set_write_fn(png, &out, AppendToString, FlushNothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
