@@ -40,15 +40,8 @@ void Image::Blend(int x, int y, const Color& color, float coverage) {
 }
 
 std::string EncodePng(const Image& image) {
-  if (image.width <= 0 || image.height <= 0) throw std::runtime_error("png: empty image");
-  std::vector<uint8_t> rgb(static_cast<std::size_t>(image.width) * image.height * 3);
-  for (int y = 0; y < image.height; ++y) {
-    const uint8_t* src = image.Pixel(0, y);
-    uint8_t* dst = &rgb[static_cast<std::size_t>(y) * image.width * 3];
-    for (int x = 0; x < image.width; ++x) std::memcpy(dst + x * 3, src + x * 4, 3);
-  }
-  return EncodePng8(rgb.data(), image.width, image.height, 3, static_cast<std::size_t>(image.width) * 3,
-                    {6, PngFilters::kSubUp});
+  return EncodePng8(image.rgba.data(), image.width, image.height, PngRows::kRgbx,
+                    static_cast<std::size_t>(image.width) * 4, {6, PngFilters::kSubUp});
 }
 
 Image DecodePng(const std::string& bytes) {

@@ -212,7 +212,8 @@ std::vector<uint8_t> ImageRenderer::Render(const TrajectoryModel& motion, double
 }
 
 std::string EncodeGrayPng(const std::vector<uint8_t>& gray, int width, int height, int compression) {
-  return EncodePng8(gray.data(), width, height, 1, static_cast<std::size_t>(width), {compression});
+  return EncodePng8(gray.data(), width, height, PngRows::kGray, static_cast<std::size_t>(width),
+                    {compression});
 }
 
 std::uintmax_t RenderImageSequence(const Scene& scene, const TrajectoryModel& motion, double end_s,

@@ -119,7 +119,7 @@ class MessageSink {
                          std::to_string(camera_.height));
     // zlib level 1, the level OpenCV's PNG writer takes by default.
     WriteFileAtomic(image_dir_ / EurocImageName(image.t_ns),
-                    EncodePng8(gray.ptr(), gray.cols, gray.rows, 1, gray.step, {1}));
+                    EncodePng8(gray.ptr(), gray.cols, gray.rows, PngRows::kGray, gray.step, {1}));
     image_times.push_back(image.t_ns);
     encodings.insert(image.encoding);
   }

@@ -18,11 +18,10 @@ void FlushNothing(png_structp) {}
 
 }  // namespace
 
-std::string EncodePng8(const uint8_t* pixels, int width, int height, int channels,
+std::string EncodePng8(const uint8_t* pixels, int width, int height, PngRows rows,
                        std::size_t row_stride_bytes, const PngEncoding& encoding) {
   if (width <= 0 || height <= 0) throw std::runtime_error("png: empty image");
-  if (channels != 1 && channels != 3)
-    throw std::runtime_error("png: 1 or 3 channels, not " + std::to_string(channels));
+  const int channels = rows == PngRows::kGray ? 1 : rows == PngRows::kRgb ? 3 : 4;
   if (row_stride_bytes < static_cast<std::size_t>(width) * static_cast<std::size_t>(channels))
     throw std::runtime_error("png: rows overlap");
   if (encoding.compression_level < 0 || encoding.compression_level > 9)
@@ -39,11 +38,12 @@ std::string EncodePng8(const uint8_t* pixels, int width, int height, int channel
   }
   png_set_write_fn(png, &out, AppendToString, FlushNothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               channels == 1 ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               rows == PngRows::kGray ? PNG_COLOR_TYPE_GRAY : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, encoding.compression_level);
   if (encoding.filters == PngFilters::kSubUp) png_set_filter(png, 0, PNG_FILTER_SUB | PNG_FILTER_UP);
   png_write_info(png, info);
+  if (rows == PngRows::kRgbx) png_set_filler(png, 0, PNG_FILLER_AFTER);  // the fourth byte is not written
   for (int y = 0; y < height; ++y)
     png_write_row(png, const_cast<png_bytep>(pixels + static_cast<std::size_t>(y) * row_stride_bytes));
   png_write_end(png, nullptr);
