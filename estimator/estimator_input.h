@@ -88,9 +88,9 @@ struct EstimatorTiming {
 struct EstimatorResult {
   bool ok = true;  // false: diverged or failed; `failure_reason` says why
   std::string failure_reason;
-  // One state per camera frame after initialization: the newest window state when that frame was solved, or
-  // the IMU's prediction from the last solved one (EstimatorOptions::max_frame_rate_hz); never NaN/Inf.
-  // Trajectory rows are the same poses.
+  // One state per solved camera frame after initialization, the newest window state (every frame unless
+  // EstimatorOptions::max_frame_rate_hz); with predict_between_solves also one per frame left out, the IMU's
+  // prediction from the last solved one. Never NaN/Inf. Trajectory rows are the same poses.
   std::vector<NavState> states;
   Trajectory trajectory;
   // One per trajectory row when options.pose_covariance (else empty): the pose's covariance in its tangent
@@ -102,7 +102,7 @@ struct EstimatorResult {
   int resets = 0;  // failure-detection resets (each followed by re-initialization)
   int stops = 0;   // failure-detection stops (1 when a failure ended the run, else 0)
   std::map<std::string, int> failure_checks;  // resets + stops by the check that fired (Estimator)
-  int frames = 0;                             // camera frames processed (solved or predicted)
+  int frames = 0;                             // camera frames processed (solved or left out)
   int solved_frames = 0;  // camera frames the window was solved at (EstimatorOptions::max_frame_rate_hz)
   int keyframes = 0;      // frames kept as keyframes (oldest marginalized)
   int marginalization_failures = 0;  // failed marginalizations: the prior was dropped each time

@@ -276,13 +276,17 @@ struct EstimatorOptions {
   ZeroVelocityOptions zero_velocity;
   bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
   // Once it tracks, the estimator solves at most this many camera frames per second (0: every frame, the
-  // default). A frame is solved when at least 0.9 of the period has passed since the last solved one; the
-  // frames between are output as the IMU's prediction from the newest solved state, without a covariance
+  // default). A frame is solved when at least 0.9 of the period has passed since the last solved one
   // (solved_frames.h). VINS-Mono's EuRoC configuration feeds its estimator 10 frames per second of the
   // camera's 20 (`freq: 10`). Measured at 10 (docs/results/2026-12-estimator-speed.md, "Fifth round"): the
-  // paper scenario's ATE as at every frame at 0.5x the CPU, but the predicted poses carry the IMU's noise
-  // between solves and the CI gate's glitch cells regress, so it is not the default.
+  // paper scenario's ATE as at every frame at 0.5x the CPU, but the CI gate's glitch cells regress, so it is
+  // not the default.
   double max_frame_rate_hz = 0.0;
+  // Under max_frame_rate_hz, output each frame left out as the IMU's prediction from the newest solved
+  // state, without a covariance, so the trajectory keeps the camera's rate. Off (the default), the
+  // trajectory has the solved frames only, as VINS-Mono's: the predictions carry the gyroscope's noise
+  // between solves (0.2 deg over 67 ms for the paper's IMU), which the relative yaw errors show.
+  bool predict_between_solves = false;
 
   template <class V>
   void Visit(V& v) {
@@ -308,9 +312,12 @@ struct EstimatorOptions {
             "to the position and yaw of the run's first frame) for the NEES");
     v.Field(
         "max_frame_rate_hz", max_frame_rate_hz,
-        "once tracking, solve at most this many camera frames per second; the frames between are output as "
-        "the IMU's prediction from the newest solved state, without a covariance (0: every frame) [Hz]",
+        "once tracking, solve at most this many camera frames per second (0: every frame); the trajectory "
+        "has the solved frames, unless predict_between_solves [Hz]",
         config::Bounds::NonNegative());
+    v.Field("predict_between_solves", predict_between_solves,
+            "under max_frame_rate_hz, output each frame left out as the IMU's prediction from the newest "
+            "solved state, without a covariance, so the trajectory keeps the camera's rate");
   }
 };
 

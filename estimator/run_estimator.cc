@@ -95,7 +95,8 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
       if (tracking && !RateAllowsSolve(last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
-        output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
+        if (options.predict_between_solves)
+          output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
         continue;
       }
       ++result.solved_frames;

@@ -3,9 +3,10 @@
 // Solving every frame of a 20-30 Hz camera buys little: the window's states are relinearized at every solve
 // anyway, and the frames between keyframes leave the window again. VINS-Mono's EuRoC configuration feeds its
 // estimator 10 frames per second (`freq: 10`). Until the estimator tracks, every frame is solved, so the
-// initialization fills its window at the camera's rate as before. The frames left out still get a pose, the
-// IMU's prediction from the newest solved state (Estimator::PredictedState), so a run's trajectory keeps the
-// camera's rate.
+// initialization fills its window at the camera's rate as before. The trajectory then has the solved frames,
+// as VINS-Mono's; with EstimatorOptions::predict_between_solves the frames left out get the IMU's prediction
+// from the newest solved state (Estimator::PredictedState), so it keeps the camera's rate. The evaluation
+// covers the ground truth between estimate poses close in time (evaluation/coverage.h) either way.
 #pragma once
 
 #include <cstdint>

@@ -7,6 +7,8 @@
 #include "core/config.h"
 #include "core/format.h"
 #include "core/so3.h"
+#include "core/types.h"
+#include "evaluation/coverage.h"
 #include "evaluation/relative_error.h"
 
 namespace vigil::evaluation {
@@ -38,7 +40,7 @@ double ExtentOf(const std::vector<Eigen::Vector3d>& p, bool horizontal) {
 // Why the run's errors are no result (EvaluationOptions::min_coverage, min_alignment_extent_m), or "".
 std::string InconclusiveReason(const TrajectoryEvaluation& ev, const EvaluationOptions& options) {
   if (ev.coverage < options.min_coverage)
-    return "coverage " + FormatFixed(100.0 * ev.coverage, 1) + " % (" + std::to_string(ev.matched_poses) +
+    return "coverage " + FormatFixed(100.0 * ev.coverage, 1) + " % (" + std::to_string(ev.covered_poses) +
            " of " + std::to_string(ev.gt_poses) + " ground-truth poses) is below evaluation.min_coverage " +
            FormatFixed(100.0 * options.min_coverage, 1) + " %";
   if (!ev.alignment_defined)
@@ -62,7 +64,8 @@ TrajectoryEvaluation EvaluateTrajectory(const Trajectory& gt, const Trajectory& 
   for (std::size_t k = 0; k < est.size(); ++k) est_ns[k] = est[k].t_ns;
   const std::vector<MatchedIndices> matches = AssociateTimestamps(est_ns, gt_ns, max_difference_ns);
   ev.matched_poses = matches.size();
-  ev.coverage = gt.empty() ? 0.0 : static_cast<double>(matches.size()) / static_cast<double>(gt.size());
+  ev.covered_poses = CoveredPoses(est_ns, gt_ns, matches, SToNs(options.max_pose_gap_s));
+  ev.coverage = gt.empty() ? 0.0 : static_cast<double>(ev.covered_poses) / static_cast<double>(gt.size());
   for (double d : options.distances_m) ev.relative.push_back({d, {}, {}, {}, {}});
   if (matches.empty()) return ev;
 
@@ -133,9 +136,9 @@ std::string EvaluationTable(const TrajectoryEvaluation& ev) {
   char line[256];
   std::snprintf(
       line, sizeof(line),
-      "matched %zu of %zu ground-truth poses (coverage %.1f %%; %zu estimate poses), length %.2f m, "
-      "alignment %s (scale %.4f)\n\n",
-      ev.matched_poses, ev.gt_poses, 100.0 * ev.coverage, ev.est_poses, ev.gt_length_m,
+      "matched %zu of %zu ground-truth poses (%zu covered, coverage %.1f %%; %zu estimate poses), length "
+      "%.2f m, alignment %s (scale %.4f)\n\n",
+      ev.matched_poses, ev.gt_poses, ev.covered_poses, 100.0 * ev.coverage, ev.est_poses, ev.gt_length_m,
       AlignmentName(ev.align).c_str(), ev.alignment.scale);
   out += line;
   if (!ev.inconclusive_reason.empty()) out += "inconclusive: " + ev.inconclusive_reason + "\n\n";

@@ -3,7 +3,7 @@
 // metrics.json and `vigil eval`.
 //
 // ATE per matched pose after alignment: translation |p_gt - (s R p_est + t)| [m] and rotation = angle of
-// (R R_est) R_gt^T [deg]. Coverage = matched ground-truth poses / ground-truth poses.
+// (R R_est) R_gt^T [deg]. Coverage = covered ground-truth poses / ground-truth poses (coverage.h).
 #pragma once
 
 #include <cstddef>
@@ -30,7 +30,8 @@ struct TrajectoryEvaluation {
   Alignment align = Alignment::kPosYaw;
   SimilarityTransform alignment;  // estimate -> ground-truth world (identity when nothing matched)
   std::size_t gt_poses = 0, est_poses = 0, matched_poses = 0;
-  double coverage = 0.0;  // matched_poses / gt_poses (0 without ground truth)
+  std::size_t covered_poses = 0;  // matched, or between estimate poses close in time (coverage.h)
+  double coverage = 0.0;          // covered_poses / gt_poses (0 without ground truth)
   // Distance travelled along the matched ground truth (the poses an estimate pose was associated with).
   // rpg_trajectory_evaluation reports the length of the whole (raw) ground truth instead; the two agree when
   // coverage = 1 and this one is shorter when the estimate starts late (initialization) or stops early.

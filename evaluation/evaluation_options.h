@@ -38,15 +38,17 @@ struct DivergenceOptions {
 };
 
 // A run's errors are a result only when they rest on enough of the run: its estimate covers at least
-// min_coverage of the ground-truth poses, and the matched ground truth moves far enough for the alignment
-// to be defined (the largest distance of a matched position from their centroid, horizontal for posyaw,
-// at least min_alignment_extent_m; `none` needs no motion). Below either the run is `inconclusive`
+// min_coverage of the ground-truth poses (coverage.h: associated with an estimate pose, or between two
+// estimate poses at most max_pose_gap_s apart), and the matched ground truth moves far enough for the
+// alignment to be defined (the largest distance of a matched position from their centroid, horizontal for
+// posyaw, at least min_alignment_extent_m; `none` needs no motion). Below either the run is `inconclusive`
 // (run_metrics.h): one pose always aligns exactly, and a yaw fitted to 0.01 m of travel is arbitrary.
 struct EvaluationOptions {
   Alignment align = Alignment::kPosYaw;
   std::vector<double> distances_m = {7.0, 14.0, 21.0, 28.0, 35.0};
   DivergenceOptions divergence;
   double min_coverage = 0.25;
+  double max_pose_gap_s = 0.25;
   double min_alignment_extent_m = 0.5;
 
   template <class V>
@@ -57,9 +59,13 @@ struct EvaluationOptions {
             config::Bounds::Positive());
     v.Section("divergence", divergence, "when a run's error makes it `diverged` rather than `ok`");
     v.Field("min_coverage", min_coverage,
-            "a run whose estimate matches less than this fraction of the ground-truth poses is "
+            "a run whose estimate covers less than this fraction of the ground-truth poses is "
             "`inconclusive`, not `ok`",
             config::Bounds::Probability());
+    v.Field("max_pose_gap_s", max_pose_gap_s,
+            "a ground-truth pose between two estimate poses at most this far apart is covered, as is one "
+            "associated with an estimate pose (an estimate at 10 Hz covers a 30 Hz ground truth) [s]",
+            config::Bounds::NonNegative());
     v.Field("min_alignment_extent_m", min_alignment_extent_m,
             "a run whose matched ground truth spans less than this (horizontally for posyaw) from its "
             "centroid is `inconclusive`: the alignment is not defined and its ATE is not computed [m]",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/format.h"
 #include "core/so3.h"
 #include "estimator/init/visual_inertial_alignment.h"
 
@@ -34,6 +35,21 @@ WindowSfmOptions VinsInitializer::SfmOptions() const {
   sfm.bundle_adjustment_iterations = options_.bundle_adjustment_iterations;
   sfm.max_rms_reprojection = options_.max_reprojection_px / fx_;
   return sfm;
+}
+
+bool VinsInitializer::GyroAgreesWithVision(const std::vector<AlignmentFrame>& frames,
+                                           const Eigen::Vector3d& b_g, InitResult* result) const {
+  if (options_.max_gyro_residual_deg <= 0.0) return true;
+  const std::vector<double> residuals_rad = GyroRotationResiduals(frames, b_g);
+  const auto worst = std::max_element(residuals_rad.begin(), residuals_rad.end());
+  if (worst == residuals_rad.end() || *worst * 180.0 / M_PI <= options_.max_gyro_residual_deg) return true;
+  const std::size_t k = static_cast<std::size_t>(worst - residuals_rad.begin()) + 1;
+  result->failure_reason = "the gyroscope and the vision disagree by " +
+                           FormatFixed(*worst * 180.0 / M_PI, 2) + " deg between window frames " +
+                           std::to_string(k - 1) + " and " + std::to_string(k) +
+                           " after the bias solve (vins.max_gyro_residual_deg " +
+                           FormatDouble(options_.max_gyro_residual_deg) + ")";
+  return false;
 }
 
 bool VinsInitializer::TryInitialize(const std::vector<InitFrame>& window, InitResult* result) {
@@ -75,6 +91,7 @@ bool VinsInitializer::TryInitialize(const std::vector<InitFrame>& window, InitRe
     result->failure_reason = "gyro bias least squares is singular";
     return false;
   }
+  if (!GyroAgreesWithVision(frames, b_g, result)) return false;
   const Eigen::Vector3d b_a = imu.front().linearized_b_a();
   for (auto& pre : imu) pre.Repropagate(b_a, b_g);
 

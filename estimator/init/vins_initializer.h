@@ -2,7 +2,8 @@
 //
 // TryInitialize runs, once the window is full: the vision-only SfM (window_sfm.h: reference frame by
 // correspondences and parallax, relative pose, triangulation, PnP, bundle adjustment), the gyro bias by least
-// squares, the preintegrations re-propagated with it, the linear alignment of velocities, gravity and scale,
+// squares, vigil's check that it explains every pair's rotation (VinsInitOptions::max_gyro_residual_deg), the
+// preintegrations re-propagated with it, the linear alignment of velocities, gravity and scale,
 // the gravity refinement on the sphere (visual_inertial_alignment.h), and finally rotates the world so
 // gravity is -z, with the yaw of W set to the first frame's body yaw and the first body position at the
 // origin. A failed attempt leaves nothing behind; the estimator retries on later windows, and after a failure
@@ -11,6 +12,7 @@
 
 #include "core/camera.h"
 #include "estimator/init/vins_init_options.h"
+#include "estimator/init/visual_inertial_alignment.h"
 #include "estimator/init/window_sfm.h"
 #include "estimator/initializer.h"
 
@@ -29,6 +31,10 @@ class VinsInitializer : public Initializer {
   WindowSfmOptions SfmOptions() const;
 
  private:
+  // False, with the reason in `result`, when a pair's rotations disagree beyond max_gyro_residual_deg.
+  bool GyroAgreesWithVision(const std::vector<AlignmentFrame>& frames, const Eigen::Vector3d& b_g,
+                            InitResult* result) const;
+
   VinsInitOptions options_;
   Eigen::Matrix3d R_BC_;
   Eigen::Vector3d p_BC_;

@@ -105,6 +105,17 @@ bool SolveGyroBias(const std::vector<AlignmentFrame>& frames, const Eigen::Vecto
   return true;
 }
 
+std::vector<double> GyroRotationResiduals(const std::vector<AlignmentFrame>& frames,
+                                          const Eigen::Vector3d& b_g) {
+  std::vector<double> residuals_rad;
+  if (!HasImu(frames)) return residuals_rad;
+  for (std::size_t k = 1; k < frames.size(); ++k) {
+    const Eigen::Quaterniond q_vision(frames[k - 1].R_LB.transpose() * frames[k].R_LB);
+    residuals_rad.push_back(AngleOf(frames[k].imu_from_prev->CorrectedDeltaQ(b_g).conjugate() * q_vision));
+  }
+  return residuals_rad;
+}
+
 bool LinearAlignment(const std::vector<AlignmentFrame>& frames, const Eigen::Vector3d& p_BC,
                      double gravity_mps2, double max_gravity_error_mps2, Alignment* alignment,
                      std::string* why) {

@@ -41,6 +41,11 @@ struct Alignment {
 bool SolveGyroBias(const std::vector<AlignmentFrame>& frames, const Eigen::Vector3d& b_g_start,
                    int iterations, Eigen::Vector3d* b_g);
 
+// Per pair k = 1..n-1 (index k-1), the angle [rad] between the vision's relative rotation and the
+// preintegrated one corrected with b_g: what the bias cannot explain. Empty without IMU between every pair.
+std::vector<double> GyroRotationResiduals(const std::vector<AlignmentFrame>& frames,
+                                          const Eigen::Vector3d& b_g);
+
 // Free-gravity linear alignment. False (with `why`) for a singular system, s <= 0, or | |g_L| - gravity | >
 // max_gravity_error.
 bool LinearAlignment(const std::vector<AlignmentFrame>& frames, const Eigen::Vector3d& p_BC,

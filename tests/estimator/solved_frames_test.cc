@@ -37,18 +37,32 @@ TEST(SolvedFrames, TheRateCapTakesEveryNthFrameOfARegularCamera) {
   EXPECT_EQ(Solved(30.0, 4, 0.0), (std::vector<int>{0, 1, 2, 3}));
 }
 
-// A short paper run at a cap of 10 of the camera's 30 frames per second once tracking: every frame
-// from the first tracked one on has a pose, the solved ones a covariance, and each predicted pose is within a
-// centimetre of the error of the solved pose it was predicted from, so the prediction carries the state with
-// the right time, gravity and biases.
-TEST(SolvedFrames, FramesBetweenSolvedOnesGetTheImusPrediction) {
+struct CappedRun {
   sim::SimOptions sim_options;
-  sim_options.duration_s = 6.0;
-  const Dataset data = sim::Simulate(sim_options, 3);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 3);
-  EstimatorOptions options;
-  options.max_frame_rate_hz = 10.0;
-  const EstimatorResult result = RunEstimator(options, input);
+  Dataset data;
+  EstimatorInput input;
+  CappedRun() {
+    sim_options.duration_s = 6.0;
+    data = sim::Simulate(sim_options, 3);
+    input = testing::InputFromSimulation(sim_options, data, 3);
+  }
+  EstimatorResult Run(bool predict_between_solves) const {
+    EstimatorOptions options;
+    options.max_frame_rate_hz = 10.0;
+    options.predict_between_solves = predict_between_solves;
+    return RunEstimator(options, input);
+  }
+};
+
+// A short paper run at a cap of 10 of the camera's 30 frames per second once tracking, predicting between
+// solves: every frame from the first tracked one on has a pose, the solved ones a covariance, and each
+// predicted pose is within a centimetre of the error of the solved pose it was predicted from, so the
+// prediction carries the state with the right time, gravity and biases.
+TEST(SolvedFrames, FramesBetweenSolvedOnesGetTheImusPrediction) {
+  const CappedRun run;
+  const EstimatorInput& input = run.input;
+  const Dataset& data = run.data;
+  const EstimatorResult result = run.Run(true);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   EXPECT_EQ(result.frames, static_cast<int>(input.frames.size()));
   ASSERT_FALSE(result.trajectory.empty());
@@ -78,6 +92,29 @@ TEST(SolvedFrames, FramesBetweenSolvedOnesGetTheImusPrediction) {
     }
   }
   EXPECT_GT(predicted, static_cast<int>(result.trajectory.size()) / 2);
+}
+
+// Without the predictions (the default) the trajectory is the solved frames' rows of the predicting run, bit
+// for bit: predicting reads the estimator's state and changes nothing in it.
+TEST(SolvedFrames, WithoutPredictionsTheTrajectoryHasTheSolvedFrames) {
+  const CappedRun run;
+  const EstimatorResult solved = run.Run(false);
+  const EstimatorResult predicted = run.Run(true);
+  ASSERT_TRUE(solved.ok) << solved.failure_reason;
+  EXPECT_EQ(solved.solved_frames, predicted.solved_frames);
+  EXPECT_EQ(solved.frames, predicted.frames);
+  ASSERT_EQ(solved.pose_covariances.size(), solved.trajectory.size());
+  std::size_t i = 0;
+  for (std::size_t k = 0; k < predicted.trajectory.size(); ++k) {
+    if (predicted.pose_covariances[k].array().isNaN().all()) continue;
+    ASSERT_LT(i, solved.trajectory.size());
+    EXPECT_EQ(solved.trajectory[i].t_ns, predicted.trajectory[k].t_ns);
+    EXPECT_EQ(solved.trajectory[i].p_W, predicted.trajectory[k].p_W) << "row " << i;
+    EXPECT_EQ(solved.pose_covariances[i], predicted.pose_covariances[k]) << "row " << i;
+    ++i;
+  }
+  EXPECT_EQ(i, solved.trajectory.size());
+  EXPECT_GT(predicted.trajectory.size(), 2 * solved.trajectory.size());  // every third frame solved
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ TEST(EvaluateTrajectory, KnownAteOfAConstantOffsetWithoutAlignment) {
   EXPECT_NEAR(ev.ate_rot_deg.max, 0.0, 1e-6);
 }
 
-TEST(EvaluateTrajectory, CoverageCountsMatchedGroundTruthPoses) {
+TEST(EvaluateTrajectory, CoverageCountsCoveredGroundTruthPoses) {
   const Trajectory gt = Ellipse(20);
   Trajectory est;
   for (std::size_t k = gt.size() / 2; k < gt.size(); ++k) est.push_back(gt[k]);  // estimator started late
@@ -84,6 +84,17 @@ TEST(EvaluateTrajectory, CoverageCountsMatchedGroundTruthPoses) {
   Trajectory shifted = gt;  // 25 ms late: each pose matches the next ground-truth pose (8.3 ms away)
   for (auto& p : shifted) p.t_ns += 25'000'000;
   EXPECT_EQ(EvaluateTrajectory(gt, shifted, EvaluationOptions{}).matched_poses, gt.size() - 1);
+
+  // Every third pose of the 30 Hz ground truth (an estimator solving 10 frames per second) covers all the
+  // poses from its first to its last; with no gap allowed, only the matched third.
+  Trajectory third;
+  for (std::size_t k = 0; k < gt.size(); k += 3) third.push_back(gt[k]);
+  const TrajectoryEvaluation ten_hz = EvaluateTrajectory(gt, third, EvaluationOptions{});
+  EXPECT_EQ(ten_hz.matched_poses, third.size());
+  EXPECT_EQ(ten_hz.covered_poses, 3 * (third.size() - 1) + 1);
+  EvaluationOptions no_gap;
+  no_gap.max_pose_gap_s = 0.0;
+  EXPECT_EQ(EvaluateTrajectory(gt, third, no_gap).covered_poses, third.size());
 
   const TrajectoryEvaluation empty = EvaluateTrajectory(gt, {}, EvaluationOptions{});
   EXPECT_EQ(empty.matched_poses, 0u);
