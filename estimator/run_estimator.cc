@@ -90,12 +90,12 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   };
   try {
     bool tracking = false;  // the newest solved frame was tracked
-    int64_t last_solved_ns = 0;
+    std::optional<int64_t> last_solved_ns;
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      if (tracking && !RateAllowsSolve(last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
-        if (options.predict_between_solves)
+      if (last_solved_ns && !RateAllowsSolve(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
+        if (tracking && options.predict_between_solves)
           output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
         continue;
       }

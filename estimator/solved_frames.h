@@ -1,19 +1,20 @@
-// Which camera frames the estimator solves once it tracks (EstimatorOptions::max_frame_rate_hz).
+// Which camera frames the estimator solves (EstimatorOptions::max_frame_rate_hz).
 //
 // Solving every frame of a 20-30 Hz camera buys little: the window's states are relinearized at every solve
 // anyway, and the frames between keyframes leave the window again. VINS-Mono's EuRoC configuration feeds its
-// estimator 10 frames per second (`freq: 10`). Until the estimator tracks, every frame is solved, so the
-// initialization fills its window at the camera's rate as before. The trajectory then has the solved frames,
-// as VINS-Mono's; with EstimatorOptions::predict_between_solves the frames left out get the IMU's prediction
-// from the newest solved state (Estimator::PredictedState), so it keeps the camera's rate. The evaluation
-// covers the ground truth between estimate poses close in time (evaluation/coverage.h) either way.
+// estimator 10 frames per second (`freq: 10`). The cap holds from the first frame, so the initialization's
+// window spans three times as long at 10 Hz from a 30 Hz camera (more motion for the gravity and scale); the
+// frames left out are never seen by the estimator. The trajectory has the solved frames, as VINS-Mono's; with
+// EstimatorOptions::predict_between_solves the frames left out get the IMU's prediction from the newest
+// solved state (Estimator::PredictedState), so it keeps the camera's rate. The evaluation covers the ground
+// truth between estimate poses close in time (evaluation/coverage.h) either way.
 #pragma once
 
 #include <cstdint>
 
 namespace vigil::estimator {
 
-// Whether a tracking estimator solves the frame at t_ns, the last frame it solved at last_solved_ns: when at
+// Whether the estimator solves the frame at t_ns, the last frame it solved at last_solved_ns: when at
 // least 0.9 / max_rate_hz has passed (always when max_rate_hz is 0). The 0.9 keeps a camera's jitter from
 // skipping a frame the rate allows: a 30 Hz camera at 10 Hz gives every third frame, a 20 Hz camera every
 // second one.

@@ -54,7 +54,7 @@ struct CappedRun {
   }
 };
 
-// A short paper run at a cap of 10 of the camera's 30 frames per second once tracking, predicting between
+// A short paper run at a cap of 10 of the camera's 30 frames per second, predicting between
 // solves: every frame from the first tracked one on has a pose, the solved ones a covariance, and each
 // predicted pose is within a centimetre of the error of the solved pose it was predicted from, so the
 // prediction carries the state with the right time, gravity and biases.
@@ -66,13 +66,15 @@ TEST(SolvedFrames, FramesBetweenSolvedOnesGetTheImusPrediction) {
   ASSERT_TRUE(result.ok) << result.failure_reason;
   EXPECT_EQ(result.frames, static_cast<int>(input.frames.size()));
   ASSERT_FALSE(result.trajectory.empty());
-  // From the first tracked frame on, one row per camera frame, and every third one solved.
+  // Every third frame solved from the first on (the initialization's too); from the first tracked frame, a
+  // solved one, one row per camera frame.
+  std::set<int64_t> solved_ns;
+  for (std::size_t k = 0; k < input.frames.size(); k += 3) solved_ns.insert(input.frames[k].t_ns);
+  EXPECT_EQ(result.solved_frames, static_cast<int>(solved_ns.size()));
   std::size_t first = 0;
   while (input.frames[first].t_ns < result.trajectory.front().t_ns) ++first;
+  EXPECT_EQ(first % 3, 0u);
   ASSERT_EQ(result.trajectory.size(), input.frames.size() - first);
-  std::set<int64_t> solved_ns;
-  for (std::size_t k = first; k < input.frames.size(); k += 3) solved_ns.insert(input.frames[k].t_ns);
-  EXPECT_EQ(result.solved_frames, static_cast<int>(first + solved_ns.size()));
   ASSERT_EQ(result.pose_covariances.size(), result.trajectory.size());
   int predicted = 0;
   Eigen::Vector3d solved_error = Eigen::Vector3d::Zero();
