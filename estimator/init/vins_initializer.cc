@@ -42,12 +42,13 @@ bool VinsInitializer::GyroAgreesWithVision(const std::vector<AlignmentFrame>& fr
   if (options_.max_gyro_residual_deg <= 0.0) return true;
   const std::vector<double> residuals_rad = GyroRotationResiduals(frames, b_g);
   const auto worst = std::max_element(residuals_rad.begin(), residuals_rad.end());
-  if (worst == residuals_rad.end() || *worst * 180.0 / M_PI <= options_.max_gyro_residual_deg) return true;
+  if (worst == residuals_rad.end()) return true;
+  const double worst_deg = *worst * 180.0 / M_PI;
+  if (worst_deg <= options_.max_gyro_residual_deg) return true;
   const std::size_t k = static_cast<std::size_t>(worst - residuals_rad.begin()) + 1;
-  result->failure_reason = "the gyroscope and the vision disagree by " +
-                           FormatFixed(*worst * 180.0 / M_PI, 2) + " deg between window frames " +
-                           std::to_string(k - 1) + " and " + std::to_string(k) +
-                           " after the bias solve (vins.max_gyro_residual_deg " +
+  result->failure_reason = "the gyroscope and the vision disagree by " + FormatFixed(worst_deg, 2) +
+                           " deg between window frames " + std::to_string(k - 1) + " and " +
+                           std::to_string(k) + " after the bias solve (vins.max_gyro_residual_deg " +
                            FormatDouble(options_.max_gyro_residual_deg) + ")";
   return false;
 }

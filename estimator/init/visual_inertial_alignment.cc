@@ -70,6 +70,14 @@ bool HasImu(const std::vector<AlignmentFrame>& frames) {
   return true;
 }
 
+// Log(dq_k(b_g)^-1 R_LB_{k-1}^T R_LB_k): the rotation of pair (k-1, k) that the bias-corrected gyroscope and
+// the vision disagree on. Needs frames[k].imu_from_prev.
+Eigen::Vector3d PairRotationResidual(const std::vector<AlignmentFrame>& frames, std::size_t k,
+                                     const Eigen::Vector3d& b_g) {
+  const Eigen::Quaterniond q_vision(frames[k - 1].R_LB.transpose() * frames[k].R_LB);
+  return LogQ(frames[k].imu_from_prev->CorrectedDeltaQ(b_g).conjugate() * q_vision);
+}
+
 }  // namespace
 
 void TangentBasis(const Eigen::Vector3d& n, Eigen::Vector3d* b1, Eigen::Vector3d* b2) {
@@ -86,11 +94,9 @@ bool SolveGyroBias(const std::vector<AlignmentFrame>& frames, const Eigen::Vecto
     Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     for (std::size_t k = 1; k < frames.size(); ++k) {
-      const Preintegration& pre = *frames[k].imu_from_prev;
-      const Eigen::Quaterniond q_vision(frames[k - 1].R_LB.transpose() * frames[k].R_LB);
       // Right perturbation: dq(b_g + d) ~ dq(b_g) Exp(J d), J = d theta / d b_g.
-      const Eigen::Vector3d r = LogQ(pre.CorrectedDeltaQ(bias).conjugate() * q_vision);
-      const Eigen::Matrix3d J = pre.jacobian().block<3, 3>(kDtheta, kBg);
+      const Eigen::Vector3d r = PairRotationResidual(frames, k, bias);
+      const Eigen::Matrix3d J = frames[k].imu_from_prev->jacobian().block<3, 3>(kDtheta, kBg);
       H += J.transpose() * J;
       g += J.transpose() * r;
     }
@@ -109,10 +115,8 @@ std::vector<double> GyroRotationResiduals(const std::vector<AlignmentFrame>& fra
                                           const Eigen::Vector3d& b_g) {
   std::vector<double> residuals_rad;
   if (!HasImu(frames)) return residuals_rad;
-  for (std::size_t k = 1; k < frames.size(); ++k) {
-    const Eigen::Quaterniond q_vision(frames[k - 1].R_LB.transpose() * frames[k].R_LB);
-    residuals_rad.push_back(AngleOf(frames[k].imu_from_prev->CorrectedDeltaQ(b_g).conjugate() * q_vision));
-  }
+  for (std::size_t k = 1; k < frames.size(); ++k)
+    residuals_rad.push_back(PairRotationResidual(frames, k, b_g).norm());
   return residuals_rad;
 }
 
