@@ -8,6 +8,7 @@
 
 #include "core/format.h"
 #include "estimator/imu_interval.h"
+#include "estimator/solved_frames.h"
 #include "estimator/zero_velocity_detector.h"
 
 namespace vigil::estimator {
@@ -186,7 +187,9 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     return FrameStatus::kFailed;
   }
   newest_pose_covariance_.reset();
-  if (options_.pose_covariance) {
+  if (options_.pose_covariance &&
+      (!last_covariance_ns_ || RateAllows(*last_covariance_ns_, t_ns, options_.covariance_rate_hz))) {
+    last_covariance_ns_ = t_ns;
     const auto covariance_start = std::chrono::steady_clock::now();
     newest_pose_covariance_ = NewestPoseCovariance();
     timing_.covariance_s += SecondsSince(covariance_start);

@@ -232,6 +232,7 @@ class Estimator {
   EstimatorTiming timing_;
   GatingStats gating_;
   std::optional<Matrix6d> newest_pose_covariance_;
+  std::optional<int64_t> last_covariance_ns_;  // the newest frame a covariance was computed at
 };
 
 }  // namespace vigil::estimator

@@ -275,6 +275,13 @@ struct EstimatorOptions {
   MitigationOptions mitigation;
   ZeroVelocityOptions zero_velocity;
   bool pose_covariance = true;  // compute each output pose's covariance (pose_covariance.h; NEES)
+  // With pose_covariance, compute the covariance at most this many times per second of solved frames (0:
+  // at every solved frame; solved_frames.h's rule); the poses between have no covariance and do not enter
+  // the NEES. The estimate is the same at any rate: the covariance is an output only. At every frame it
+  // cost a quarter of a paper run's CPU; at 10 Hz (every third frame of a 30 Hz camera) the NEES of paper
+  // seeds 1-10 is 3.59 / 1.56 against 3.56 / 1.56 (docs/results/2026-12-estimator-speed.md, "Seventh
+  // round").
+  double covariance_rate_hz = 10.0;
   // The estimator solves at most this many camera frames per second, from the first frame on (0: every
   // frame, the default). A frame is solved when at least 0.9 of the period has passed since the last solved
   // one (solved_frames.h); the others are left out. VINS-Mono's EuRoC configuration feeds its estimator 10
@@ -311,6 +318,11 @@ struct EstimatorOptions {
     v.Field("pose_covariance", pose_covariance,
             "compute each output pose's covariance (the marginal of the newest frame of the window, relative "
             "to the position and yaw of the run's first frame) for the NEES");
+    v.Field(
+        "covariance_rate_hz", covariance_rate_hz,
+        "with pose_covariance, compute the covariance at most this many times per second of solved frames "
+        "(0: every solved frame); the poses between have none and do not enter the NEES [Hz]",
+        config::Bounds::NonNegative());
     v.Field("max_frame_rate_hz", max_frame_rate_hz,
             "solve at most this many camera frames per second, from the first frame (0: every frame); the "
             "trajectory has the solved frames, unless predict_between_solves [Hz]",

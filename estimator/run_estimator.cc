@@ -94,7 +94,7 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      if (last_solved_ns && !RateAllowsSolve(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
+      if (last_solved_ns && !RateAllows(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
         if (tracking && options.predict_between_solves)
           output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
         continue;

@@ -2,8 +2,8 @@
 
 namespace vigil::estimator {
 
-bool RateAllowsSolve(int64_t last_solved_ns, int64_t t_ns, double max_rate_hz) {
-  return max_rate_hz <= 0.0 || static_cast<double>(t_ns - last_solved_ns) >= 0.9e9 / max_rate_hz;
+bool RateAllows(int64_t last_ns, int64_t t_ns, double max_rate_hz) {
+  return max_rate_hz <= 0.0 || static_cast<double>(t_ns - last_ns) >= 0.9e9 / max_rate_hz;
 }
 
 }  // namespace vigil::estimator

@@ -14,10 +14,11 @@
 
 namespace vigil::estimator {
 
-// Whether the estimator solves the frame at t_ns, the last frame it solved at last_solved_ns: when at
-// least 0.9 / max_rate_hz has passed (always when max_rate_hz is 0). The 0.9 keeps a camera's jitter from
+// Whether a rate of at most max_rate_hz allows a frame at t_ns, the last frame taken at last_ns (a solve
+// under EstimatorOptions::max_frame_rate_hz, a covariance under covariance_rate_hz): when at least
+// 0.9 / max_rate_hz has passed (always when max_rate_hz is 0). The 0.9 keeps a camera's jitter from
 // skipping a frame the rate allows: a 30 Hz camera at 10 Hz gives every third frame, a 20 Hz camera every
 // second one.
-bool RateAllowsSolve(int64_t last_solved_ns, int64_t t_ns, double max_rate_hz);
+bool RateAllows(int64_t last_ns, int64_t t_ns, double max_rate_hz);
 
 }  // namespace vigil::estimator

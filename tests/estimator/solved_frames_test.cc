@@ -18,7 +18,7 @@ std::vector<int> Solved(double camera_hz, int count, double max_rate_hz, int64_t
   int64_t last_ns = 0;
   for (int k = 1; k < count; ++k) {
     const int64_t t_ns = static_cast<int64_t>(k * 1e9 / camera_hz) + (k % 2 == 0 ? jitter_ns : -jitter_ns);
-    if (!RateAllowsSolve(last_ns, t_ns, max_rate_hz)) continue;
+    if (!RateAllows(last_ns, t_ns, max_rate_hz)) continue;
     last_ns = t_ns;
     solved.push_back(k);
   }
