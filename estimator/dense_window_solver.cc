@@ -65,7 +65,8 @@ struct Linearization {
   Eigen::MatrixXd H;
   Eigen::VectorXd g;
   std::vector<WindowInformation::EliminatedDepth> depths;
-  // The depths' elimination (WindowInformation::depth_fill_H/g), which H and g hold subtracted.
+  // The depths' elimination (WindowInformation::depth_fill_H/g: fill_H over the poses alone), which H and
+  // g hold subtracted.
   Eigen::MatrixXd fill_H;
   Eigen::VectorXd fill_g;
   Eigen::VectorXd diagonal;  // of the states' information before the depths' elimination: the damping's
@@ -97,7 +98,7 @@ bool Linearize(const DenseWindowProblem& p, Linearization* out) {
   out->fill_H = info.depth_fill_H();
   out->fill_g = info.depth_fill_g();
   out->H = std::move(info.mutable_H());
-  out->H -= out->fill_H;
+  WindowInformation::AddPoseBlocks(out->fill_H, -1.0, &out->H);
   out->g = info.g() - out->fill_g;
   if (p.hold_oldest_pose) {
     out->H.topRows<kPoseTangentSize>().setZero();
@@ -113,7 +114,12 @@ bool Linearize(const DenseWindowProblem& p, Linearization* out) {
                                [](const auto& column_w) { return column_w.first < kPoseTangentSize; }),
                 d.w.end());
   }
-  out->diagonal = out->H.diagonal() + out->fill_H.diagonal();
+  out->diagonal = out->H.diagonal();
+  for (std::size_t k = 0; k < p.poses.size(); ++k) {
+    const int frame = static_cast<int>(k);
+    out->diagonal.segment<kPoseTangentSize>(WindowInformation::PoseColumn(frame)) +=
+        out->fill_H.diagonal().segment<kPoseTangentSize>(WindowInformation::FillColumn(frame));
+  }
   return out->H.allFinite() && out->g.allFinite();
 }
 
@@ -129,7 +135,8 @@ double DepthDamping(const WindowInformation::EliminatedDepth& d, double radius) 
 // clamp is corrected on its own.
 void DampedSystem(const Linearization& lin, double radius, Eigen::MatrixXd* A, Eigen::VectorXd* b) {
   const double scale = 1.0 / (radius + 1.0);
-  *A = lin.H + scale * lin.fill_H;
+  *A = lin.H;
+  WindowInformation::AddPoseBlocks(lin.fill_H, scale, A);
   A->diagonal() += lin.diagonal.cwiseMax(kMinDiagonal).cwiseMin(kMaxDiagonal) / radius;
   *b = -lin.g - scale * lin.fill_g;
   for (const WindowInformation::EliminatedDepth& d : lin.depths) {

@@ -136,9 +136,11 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
     const Vector6d f = w_p / h_dd;
     if (separate_fill_) {
       fill_g_.segment<kPose>(column_p) += f * b_d;
+      const int fill_p = FillColumn(column_p / kFrameSize);
       for (const auto& [column_q, w_q] : w)
         if (column_q >= column_p)
-          fill_H_.block<kPose, kPose>(column_p, column_q).noalias() += f * w_q.transpose();
+          fill_H_.block<kPose, kPose>(fill_p, FillColumn(column_q / kFrameSize)).noalias() +=
+              f * w_q.transpose();
     } else {
       g_.segment<kPose>(column_p) -= f * b_d;
       for (const auto& [column_q, w_q] : w)
@@ -158,8 +160,17 @@ void WindowInformation::MirrorUpperTriangles() const {
 
 void WindowInformation::SeparateDepthFill() {
   separate_fill_ = true;
-  fill_H_.setZero(H_.rows(), H_.cols());
+  fill_H_.setZero(FillColumn(frames()), FillColumn(frames()));
   fill_g_.setZero(g_.size());
+}
+
+void WindowInformation::AddPoseBlocks(const Eigen::MatrixXd& pose_matrix, double scale,
+                                      Eigen::MatrixXd* window) {
+  const int frames = static_cast<int>(pose_matrix.cols()) / kPose;
+  for (int j = 0; j < frames; ++j)
+    for (int i = 0; i < frames; ++i)
+      window->block<kPose, kPose>(PoseColumn(i), PoseColumn(j)) +=
+          scale * pose_matrix.block<kPose, kPose>(FillColumn(i), FillColumn(j));
 }
 
 bool WindowInformation::AddPrior(const LinearPrior& prior) {

@@ -64,7 +64,14 @@ class WindowInformation {
   // From now on, AddTrack adds the depths' elimination (sum over tracks of w w^T / h_dd and w b_d / h_dd)
   // to depth_fill_H() and depth_fill_g() instead of subtracting it from H() and g(): H() - depth_fill_H()
   // is then the information with the depths eliminated. A solve that damps the depths rescales the fill.
+  // The depths couple poses only, so depth_fill_H() is over the poses alone (frame k's at FillColumn(k):
+  // 96 x 96 for 16 frames, against the window's 240 x 240), added to a window matrix by AddPoseBlocks;
+  // depth_fill_g() is in the window's layout.
   void SeparateDepthFill();
+  static constexpr int FillColumn(int frame) { return kPoseTangentSize * frame; }
+  // window += scale * pose_matrix, pose_matrix over the poses alone (FillColumn), window in the window's
+  // layout: each pose block's entries, the others untouched.
+  static void AddPoseBlocks(const Eigen::MatrixXd& pose_matrix, double scale, Eigen::MatrixXd* window);
   const Eigen::MatrixXd& depth_fill_H() const {
     MirrorUpperTriangles();
     return fill_H_;

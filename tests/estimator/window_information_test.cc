@@ -68,8 +68,12 @@ TEST(WindowInformation, TheSeparateDepthFillIsWhatTheEliminationSubtracts) {
     return information;
   };
   const WindowInformation eliminated = build(false), separate = build(true);
+  // The fill is over the poses alone.
+  ASSERT_EQ(separate.depth_fill_H().rows(), WindowInformation::FillColumn(separate.frames()));
   EXPECT_GT(separate.depth_fill_H().norm(), 1e-3 * eliminated.H().norm());
-  EXPECT_LT((separate.H() - separate.depth_fill_H() - eliminated.H()).norm(), 1e-12 * eliminated.H().norm());
+  Eigen::MatrixXd eliminated_again = separate.H();
+  WindowInformation::AddPoseBlocks(separate.depth_fill_H(), -1.0, &eliminated_again);
+  EXPECT_LT((eliminated_again - eliminated.H()).norm(), 1e-12 * eliminated.H().norm());
   EXPECT_LT((separate.g() - separate.depth_fill_g() - eliminated.g()).norm(), 1e-12 * eliminated.g().norm());
 }
 
