@@ -278,9 +278,9 @@ struct EstimatorOptions {
   // With pose_covariance, compute the covariance at most this many times per second of solved frames (0:
   // at every solved frame; solved_frames.h's rule); the poses between have no covariance and do not enter
   // the NEES. The estimate is the same at any rate: the covariance is an output only. At every frame it
-  // cost a quarter of a paper run's CPU; at 10 Hz (every third frame of a 30 Hz camera) the NEES of paper
-  // seeds 1-10 is 3.59 / 1.56 against 3.56 / 1.56 (docs/results/2026-12-estimator-speed.md, "Seventh
-  // round").
+  // took a third of the estimator's time in a paper run; at 10 Hz (every third frame of a 30 Hz camera) the
+  // NEES of paper seeds 1-10 is 3.59 / 1.56 against 3.56 / 1.56 (docs/results/2026-12-estimator-speed.md,
+  // "Seventh round").
   double covariance_rate_hz = 10.0;
   // The estimator solves at most this many camera frames per second, from the first frame on (0: every
   // frame, the default). A frame is solved when at least 0.9 of the period has passed since the last solved
