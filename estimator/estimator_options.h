@@ -295,6 +295,12 @@ struct EstimatorOptions {
   // trajectory has the solved frames only, as VINS-Mono's: the predictions carry the gyroscope's noise
   // between solves (0.2 deg over 67 ms for the paper's IMU), which the relative yaw errors show.
   bool predict_between_solves = false;
+  // Under max_frame_rate_hz, also solve each frame whose interval since the last solved frame holds a sample
+  // a detector flagged (vigil's rule; solved_frames.h). A capped IMU factor spans three camera intervals, and
+  // where its data is wrong (a DTW replacement, an unremoved glitch) a third of the vision holds it: on the
+  // CI gate's N(50,10) cell the paper's dtw went from 1.26 to 1.69 m capped, 1.20 m with this rule
+  // (docs/results/2026-12-estimator-speed.md, "Eighth round").
+  bool solve_flagged_frames = true;
 
   template <class V>
   void Visit(V& v) {
@@ -330,6 +336,9 @@ struct EstimatorOptions {
     v.Field("predict_between_solves", predict_between_solves,
             "under max_frame_rate_hz, output each frame left out as the IMU's prediction from the newest "
             "solved state, without a covariance, so the trajectory keeps the camera's rate");
+    v.Field("solve_flagged_frames", solve_flagged_frames,
+            "under max_frame_rate_hz, also solve each frame whose interval since the last solved frame holds "
+            "a sample a detector flagged");
   }
 };
 

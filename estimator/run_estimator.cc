@@ -68,9 +68,9 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   const IntegratedImu deduplicated = DropRepeatedTimestamps(input);
   const bool repeated = deduplicated.repeated > 0;
   const ImuStream& imu = repeated ? deduplicated.imu : input.imu;
+  const std::vector<uint8_t>& flagged = repeated ? deduplicated.flagged : input.imu_flagged;
   CheckInput(imu, input);
-  const ImuTrust trust =
-      ComputeImuTrust(options.mitigation, imu, repeated ? deduplicated.flagged : input.imu_flagged);
+  const ImuTrust trust = ComputeImuTrust(options.mitigation, imu, flagged);
   const double imu_rate_hz = static_cast<double>(imu.size() - 1) / NsToS(imu.back().t_ns - imu.front().t_ns);
   ImuNoiseDensities noise = ResolveImuNoise(options.imu_noise, input.imu_noise, imu_rate_hz);
   EstimatorResult result;
@@ -94,7 +94,8 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      if (last_solved_ns && !RateAllows(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz)) {
+      if (last_solved_ns && !RateAllows(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz) &&
+          !(options.solve_flagged_frames && AnyFlaggedSample(imu, flagged, *last_solved_ns, frame.t_ns))) {
         if (tracking && options.predict_between_solves)
           output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
         continue;

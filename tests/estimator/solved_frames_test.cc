@@ -37,6 +37,18 @@ TEST(SolvedFrames, TheRateCapTakesEveryNthFrameOfARegularCamera) {
   EXPECT_EQ(Solved(30.0, 4, 0.0), (std::vector<int>{0, 1, 2, 3}));
 }
 
+TEST(SolvedFrames, AFlaggedSampleIsFoundInItsInterval) {
+  ImuStream imu(10);
+  for (std::size_t k = 0; k < imu.size(); ++k) imu[k].t_ns = static_cast<int64_t>(k) * 5'000'000;  // 200 Hz
+  std::vector<uint8_t> flagged(imu.size(), 0);
+  flagged[4] = 1;                                                       // at 20 ms
+  EXPECT_TRUE(AnyFlaggedSample(imu, flagged, 10'000'000, 20'000'000));  // (after, until]
+  EXPECT_TRUE(AnyFlaggedSample(imu, flagged, 19'999'999, 45'000'000));
+  EXPECT_FALSE(AnyFlaggedSample(imu, flagged, 20'000'000, 45'000'000));
+  EXPECT_FALSE(AnyFlaggedSample(imu, flagged, 0, 19'999'999));
+  EXPECT_FALSE(AnyFlaggedSample(imu, {}, 0, 45'000'000));  // no flags: none is flagged
+}
+
 struct CappedRun {
   sim::SimOptions sim_options;
   Dataset data;
@@ -53,6 +65,46 @@ struct CappedRun {
     return RunEstimator(options, input);
   }
 };
+
+// A detector's flags on the IMU from 3.0 to 3.2 s: with solve_flagged_frames (the default) the capped run
+// solves every camera frame from the first one after a flagged sample to the first one after the last;
+// without it, every third frame throughout.
+TEST(SolvedFrames, FramesAfterFlaggedSamplesAreSolved) {
+  CappedRun run;
+  const int64_t flag_from_ns = 3'000'000'000, flag_to_ns = 3'200'000'000;
+  run.input.imu_flagged.assign(run.input.imu.size(), 0);
+  for (std::size_t k = 0; k < run.input.imu.size(); ++k)
+    run.input.imu_flagged[k] = run.input.imu[k].t_ns >= flag_from_ns && run.input.imu[k].t_ns <= flag_to_ns;
+  EstimatorOptions options;
+  options.max_frame_rate_hz = 10.0;
+  const EstimatorResult with_rule = RunEstimator(options, run.input);
+  options.solve_flagged_frames = false;
+  const EstimatorResult without_rule = RunEstimator(options, run.input);
+  ASSERT_TRUE(with_rule.ok) << with_rule.failure_reason;
+  ASSERT_TRUE(without_rule.ok) << without_rule.failure_reason;
+  std::set<int64_t> solved_with, solved_without;
+  for (const StampedPose& pose : with_rule.trajectory) solved_with.insert(pose.t_ns);
+  for (const StampedPose& pose : without_rule.trajectory) solved_without.insert(pose.t_ns);
+  ASSERT_LT(*solved_with.begin(), flag_from_ns);  // tracking before the flags
+  const std::vector<CameraFrame>& frames = run.input.frames;
+  int inside = 0;
+  for (std::size_t k = 1; k < frames.size(); ++k) {
+    const int64_t t_ns = frames[k].t_ns;
+    if (t_ns <= *solved_with.begin()) continue;
+    // Frame k's interval (frames[k - 1], t] holds a flagged sample: the rule solves it.
+    const bool after_flagged = frames[k - 1].t_ns < flag_to_ns && t_ns >= flag_from_ns;
+    if (after_flagged) {
+      ++inside;
+      EXPECT_TRUE(solved_with.count(t_ns)) << "frame " << k;
+    }
+    // Before the flags the two runs are the same run (after them the cap's phase may differ).
+    if (t_ns < flag_from_ns) {
+      EXPECT_EQ(solved_with.count(t_ns), solved_without.count(t_ns)) << "frame " << k;
+    }
+  }
+  EXPECT_GE(inside, 6);  // 0.2 s of a 30 Hz camera
+  EXPECT_GT(with_rule.solved_frames, without_rule.solved_frames + 3);
+}
 
 // A short paper run at a cap of 10 of the camera's 30 frames per second, predicting between
 // solves: every frame from the first tracked one on has a pose, the solved ones a covariance, and each
