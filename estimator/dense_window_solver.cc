@@ -115,11 +115,9 @@ bool Linearize(const DenseWindowProblem& p, Linearization* out) {
                 d.w.end());
   }
   out->diagonal = out->H.diagonal();
-  for (std::size_t k = 0; k < p.poses.size(); ++k) {
-    const int frame = static_cast<int>(k);
-    out->diagonal.segment<kPoseTangentSize>(WindowInformation::PoseColumn(frame)) +=
-        out->fill_H.diagonal().segment<kPoseTangentSize>(WindowInformation::FillColumn(frame));
-  }
+  for (int k = 0; k < static_cast<int>(p.poses.size()); ++k)
+    out->diagonal.segment<kPoseTangentSize>(WindowInformation::PoseColumn(k)) +=
+        out->fill_H.diagonal().segment<kPoseTangentSize>(WindowInformation::FillColumn(k));
   return out->H.allFinite() && out->g.allFinite();
 }
 

@@ -10,6 +10,11 @@ ImuStream::const_iterator FirstNotBefore(const ImuStream& imu, int64_t t_ns) {
                           [](const ImuSample& s, int64_t t) { return s.t_ns < t; });
 }
 
+ImuStream::const_iterator FirstAfter(const ImuStream& imu, int64_t t_ns) {
+  return std::upper_bound(imu.begin(), imu.end(), t_ns,
+                          [](int64_t t, const ImuSample& s) { return t < s.t_ns; });
+}
+
 // The variance scale of the measurement at t_ns (see PreintegrateInterval).
 double VarianceScaleAt(const ImuStream& imu, const std::vector<double>& scale, int64_t t_ns) {
   const auto hi = FirstNotBefore(imu, t_ns);
@@ -50,9 +55,7 @@ Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t
   Preintegration pre(first.a_B, first.w_B, b_a, b_g, noise, imu_rate_hz,
                      scaled ? VarianceScaleAt(imu, *variance_scale, t0_ns) : 1.0);
   int64_t t_last = t0_ns;
-  for (auto it = std::upper_bound(imu.begin(), imu.end(), t0_ns,
-                                  [](int64_t t, const ImuSample&s) { return t < s.t_ns; });
-       it != imu.end() && it->t_ns < t1_ns; ++it) {
+  for (auto it = FirstAfter(imu, t0_ns); it != imu.end() && it->t_ns < t1_ns; ++it) {
     pre.Push(NsToS(it->t_ns - t_last), it->a_B, it->w_B,
              scaled ? (*variance_scale)[static_cast<std::size_t>(it - imu.begin())] : 1.0);
     t_last = it->t_ns;
@@ -61,6 +64,14 @@ Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t
   pre.Push(NsToS(t1_ns - t_last), last.a_B, last.w_B,
            scaled ? VarianceScaleAt(imu, *variance_scale, t1_ns) : 1.0);
   return pre;
+}
+
+bool AnyFlaggedSample(const ImuStream& imu, const std::vector<uint8_t>& flagged, int64_t after_ns,
+                      int64_t until_ns) {
+  if (flagged.empty()) return false;
+  for (auto it = FirstAfter(imu, after_ns); it != imu.end() && it->t_ns <= until_ns; ++it)
+    if (flagged[static_cast<std::size_t>(it - imu.begin())]) return true;
+  return false;
 }
 
 }  // namespace vigil::estimator

@@ -21,5 +21,9 @@ Preintegration PreintegrateInterval(const ImuStream& imu, int64_t t0_ns, int64_t
                                     const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
                                     const ImuNoiseDensities& noise, double imu_rate_hz,
                                     const std::vector<double>* variance_scale = nullptr);
+// Whether a sample of `imu` (time-ordered) with a time in (after_ns, until_ns] is flagged; `flagged` is empty
+// (none is) or holds one flag per sample of `imu`.
+bool AnyFlaggedSample(const ImuStream& imu, const std::vector<uint8_t>& flagged, int64_t after_ns,
+                      int64_t until_ns);
 
 }  // namespace vigil::estimator

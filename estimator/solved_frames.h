@@ -10,14 +10,12 @@
 // truth between estimate poses close in time (evaluation/coverage.h) either way.
 //
 // With EstimatorOptions::solve_flagged_frames (vigil's rule) the cap lets through each frame whose interval
-// since the last solved one holds a sample a detector flagged: the IMU factors over flagged (replaced or
-// suspect) data then span one camera interval, and vision holds them at the camera's rate.
+// since the last solved one holds a sample a detector flagged (AnyFlaggedSample, imu_interval.h): the IMU
+// factors over flagged (replaced or suspect) data then span one camera interval, and vision holds them at the
+// camera's rate.
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
-#include "core/types.h"
 
 namespace vigil::estimator {
 
@@ -27,10 +25,5 @@ namespace vigil::estimator {
 // skipping a frame the rate allows: a 30 Hz camera at 10 Hz gives every third frame, a 20 Hz camera every
 // second one.
 bool RateAllows(int64_t last_ns, int64_t t_ns, double max_rate_hz);
-
-// Whether a sample of `imu` with a time in (after_ns, until_ns] is flagged; `flagged` is empty (none is) or
-// holds one flag per sample. `imu` is sorted by time.
-bool AnyFlaggedSample(const ImuStream& imu, const std::vector<uint8_t>& flagged, int64_t after_ns,
-                      int64_t until_ns);
 
 }  // namespace vigil::estimator
