@@ -90,18 +90,23 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   };
   try {
     bool tracking = false;  // the newest solved frame was tracked
-    std::optional<int64_t> last_solved_ns;
+    // The cap's pace counts from the last frame it let through, so that the frames solved after flagged
+    // samples do not shift it: the trajectory has the paced frames, at the same rate in every run.
+    std::optional<int64_t> last_solved_ns, last_paced_ns;
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      if (last_solved_ns && !RateAllows(*last_solved_ns, frame.t_ns, options.max_frame_rate_hz) &&
-          !(options.solve_flagged_frames && AnyFlaggedSample(imu, flagged, *last_solved_ns, frame.t_ns))) {
+      const bool paced = !last_paced_ns || RateAllows(*last_paced_ns, frame.t_ns, options.max_frame_rate_hz);
+      const bool after_flagged = !paced && options.solve_flagged_frames &&
+                                 AnyFlaggedSample(imu, flagged, *last_solved_ns, frame.t_ns);
+      if (!paced && !after_flagged) {
         if (tracking && options.predict_between_solves)
           output(estimator.PredictedState(frame.t_ns, imu, &trust.variance_scale), std::nullopt);
         continue;
       }
       ++result.solved_frames;
       last_solved_ns = frame.t_ns;
+      if (paced) last_paced_ns = frame.t_ns;
       const FrameStatus status =
           estimator.AddFrame(frame.t_ns, NormalizedFeatures(frame, input.camera), imu, &trust.variance_scale);
       tracking = status == FrameStatus::kTracking;
@@ -112,7 +117,10 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
         break;
       }
       if (!tracking) continue;
-      output(estimator.newest_state(), estimator.newest_pose_covariance());
+      // A frame solved only for its flagged interval refines the window; it is a row of the trajectory only
+      // where every frame is one (predict_between_solves).
+      if (paced || options.predict_between_solves)
+        output(estimator.newest_state(), estimator.newest_pose_covariance());
       if (!after_tracked_frame(estimator)) break;
     }
   } catch (const std::exception& e) {

@@ -12,7 +12,9 @@
 // With EstimatorOptions::solve_flagged_frames (vigil's rule) the cap lets through each frame whose interval
 // since the last solved one holds a sample a detector flagged (AnyFlaggedSample, imu_interval.h): the IMU
 // factors over flagged (replaced or suspect) data then span one camera interval, and vision holds them at the
-// camera's rate.
+// camera's rate. Those frames do not shift the cap's pace, and the trajectory keeps to it (unless
+// predict_between_solves gives every frame a row): every run has the same pose rate, whatever its flags, so a
+// sweep's pooled relative errors weigh its runs alike (docs/sweeps.md).
 #pragma once
 
 #include <cstdint>
