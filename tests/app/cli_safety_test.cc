@@ -233,14 +233,15 @@ TEST_F(Cli, AHugeSeedCountIsRefusedBeforeAnyWork) {
 namespace vigil {
 namespace {
 
-// A EuRoC folder as published, from `vigil simulate --images` (1 s, 160 x 120): tmp/eu/mav0 with the
+// A EuRoC folder as published, from `vigil simulate --images` (2 s, 160 x 120: the first window at 10 solved
+// frames per second ends at 1.5 s): tmp/eu/mav0 with the
 // dataset's features.csv beside it.
 class EurocCli : public ::testing::Test {
  protected:
   void SetUp() override {
     config_ =
         tmp_.File("config.yaml",
-                  "duration_s: 1\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
+                  "duration_s: 2\ncamera: {width: 160, height: 120, fx: 115, fy: 115, cx: 79.5, cy: 59.5}\n");
     const std::string ds = (tmp_.path() / "ds").string();
     ASSERT_EQ(Vigil(tmp_, "simulate " + config_ + " -o " + ds + " --images").status, 0);
     fs::create_directories(eu_);

@@ -202,7 +202,8 @@ TEST(SharedEurocCli, RunSaysThePlatformDidNotMove) {
   EXPECT_EQ(s.status, 1) << s.err;
   const nlohmann::json ms = nlohmann::json::parse(ReadFile(still / "metrics.json"));
   EXPECT_EQ(ms["status"], "inconclusive") << ms.dump();
-  EXPECT_LT(ms["estimator"]["initialized_at_s"].get<double>(), 1.0) << ms.dump();
+  // It starts with its first window: 16 frames solved at 10 Hz.
+  EXPECT_LE(ms["estimator"]["initialized_at_s"].get<double>(), 1.55) << ms.dump();
 }
 
 }  // namespace

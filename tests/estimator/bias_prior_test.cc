@@ -72,12 +72,12 @@ double WorstAccelBiasError(const EstimatorResult& result, const std::vector<NavS
 // it was carried by the marginalization prior); without it the bias wanders with the window's noise.
 TEST(BiasPriorTest, TightPriorHoldsTheBiasThroughTheRun) {
   sim::SimOptions sim_options;
-  sim_options.duration_s = 4.0;
+  sim_options.duration_s = 5.0;
   sim_options.imu.noise.initial_accel_bias = {0.05, -0.03, 0.08};  // the prior must follow the initializer
   const Dataset data = sim::Simulate(sim_options, 5);
   const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 5);
 
-  // A short window with frequent keyframes, so that the prior's frame leaves it early in the 4 s run.
+  // A short window with frequent keyframes, so that the prior's frame leaves it early in the 5 s run.
   EstimatorOptions short_window;
   short_window.window.size = 10;
   short_window.window.min_parallax_px = 10.0;

@@ -8,8 +8,10 @@
 namespace vigil::estimator {
 namespace {
 
+// Every frame solved, so that the covariance's rate is the only one.
 EstimatorResult RunWithCovarianceRate(const EstimatorInput& input, double covariance_rate_hz) {
   EstimatorOptions options;
+  options.max_frame_rate_hz = 0.0;
   options.covariance_rate_hz = covariance_rate_hz;
   return RunEstimator(options, input);
 }
@@ -44,6 +46,22 @@ TEST(CovarianceRate, EveryThirdPoseOfA30HzCameraGetsTheSameCovariance) {
     }
   }
   EXPECT_GT(with_covariance, 40);
+}
+
+// At the defaults the frame-rate cap and the covariance's rate are both 10 Hz: every pose of the trajectory
+// (a solved frame) has its covariance.
+TEST(CovarianceRate, AtTheDefaultsEverySolvedPoseHasACovariance) {
+  sim::SimOptions sim_options;
+  sim_options.duration_s = 6.0;
+  const Dataset data = sim::Simulate(sim_options, 5);
+  const EstimatorResult result =
+      RunEstimator(EstimatorOptions{}, testing::InputFromSimulation(sim_options, data, 5));
+  ASSERT_TRUE(result.ok) << result.failure_reason;
+  ASSERT_GT(result.trajectory.size(), 20u);
+  ASSERT_EQ(result.pose_covariances.size(), result.trajectory.size());
+  for (std::size_t i = 0; i < result.pose_covariances.size(); ++i) {
+    EXPECT_TRUE(result.pose_covariances[i].allFinite()) << "row " << i;
+  }
 }
 
 }  // namespace

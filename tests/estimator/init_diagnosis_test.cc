@@ -57,11 +57,12 @@ TEST(InitDiagnosis, AStationaryRecordingSaysThePlatformDidNotMove) {
       << result.failure_reason;
   EXPECT_NE(result.failure_reason.find("last attempt: "), std::string::npos) << result.failure_reason;
 
-  // With the static start (the default) the same still recording starts within its first window.
+  // With the static start (the default) the same still recording starts with its first window: 16 frames
+  // solved at 10 Hz.
   options.zero_velocity.static_init = true;
   const EstimatorResult still = RunEstimator(options, input);
   EXPECT_TRUE(still.ok) << still.failure_reason;
-  EXPECT_LT(still.initialized_at_s, 1.0);
+  EXPECT_LE(still.initialized_at_s, 1.55);
 
   const InitEvidence e = MeasureInitEvidence(input, input.imu);
   EXPECT_EQ(e.frames, static_cast<int>(input.frames.size()));

@@ -190,8 +190,8 @@ TEST(ZeroVelocityRunTest, StaticStartAfterAShiftDuringTheRest) {
 }
 
 // The IMU simulated along EuRoC V1_01 (the committed excerpt), which stands still for its first 5.3 s: with a
-// static start the estimator initializes in the first second, holds the position while still, and goes on
-// after the take-off.
+// static start the estimator initializes with its first window (16 frames solved at 10 Hz), holds the
+// position while still, and goes on after the take-off.
 TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
   const fs::path root = fs::path(VIGIL_SOURCE_DIR);
   experiments::RunConfig config =
@@ -206,7 +206,7 @@ TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
   ASSERT_TRUE(result.ok) << result.failure_reason;
   ASSERT_FALSE(result.states.empty());
   const NavState& first = result.states.front();
-  EXPECT_LT(NsToS(first.t_ns - data.frames.front().t_ns), 1.0);
+  EXPECT_LE(NsToS(first.t_ns - data.frames.front().t_ns), 1.55);
   // Position held while still (t < 5 s): the window keeps its first still frames (no keyframe without
   // parallax: window.size of them, 15) and the newest, chained by no-motion factors of 1 mm std each, so the
   // newest is within about sqrt(15) mm = 4 mm (one std) of the first; 2 cm is five std.
@@ -217,7 +217,7 @@ TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
   std::printf("static start at %.2f s, worst still displacement %.4f m, %zu states\n",
               NsToS(first.t_ns - data.frames.front().t_ns), worst_m, result.states.size());
   EXPECT_LT(worst_m, 0.02);
-  EXPECT_GT(result.states.size(), data.frames.size() - 25);
+  EXPECT_GT(static_cast<int>(result.states.size()), result.solved_frames - 25);
 }
 
 }  // namespace
