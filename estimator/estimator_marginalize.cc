@@ -24,7 +24,9 @@ void Estimator::KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
   const LinearPrior gauge = GaugePrior(window_.front()->pose);
   const LinearPrior* previous = anchored_prior_ ? anchored_prior_.get() : &gauge;
   auto anchored = std::make_shared<LinearPrior>();
-  if (Marginalize(previous, terms, dropped, options_.window.marginalization_eigen_threshold, anchored.get()))
+  // Only the pose covariance reads it, as information: no square-root form.
+  if (MarginalizeInformation(previous, terms, dropped, options_.window.marginalization_eigen_threshold,
+                             anchored.get()))
     anchored_prior_ = std::move(anchored);
   else
     anchored_prior_.reset();

@@ -78,7 +78,7 @@ struct LinearPrior {
   };
   std::vector<Block> blocks;
   // rows x sum of tangent sizes, rows <= columns, upper trapezoidal (zero below the diagonal): row i involves
-  // the columns from i on only.
+  // the columns from i on only. Empty in a prior built by MarginalizeInformation().
   Eigen::MatrixXd J;
   Eigen::VectorXd r;
   // The same quadratic in information form at x0, H = J^T J and g = J^T r: the next marginalization adds
@@ -111,6 +111,14 @@ bool EliminateDropped(const LinearPrior* previous, const std::vector<Marginaliza
 // EliminateDropped() in square-root form. The same arguments; false also when the form has no rows.
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                  const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior);
+
+// The same prior in information form only (H with Marginalize()'s ridge, g; J and r left empty), without
+// the Cholesky factorization, for a prior that is only read as information (PriorInformationAtCurrentValues)
+// and never evaluated as a factor: the estimator's anchored prior of the pose covariance. Where Marginalize()
+// factorizes (almost always), H and g are the same bits; where it falls back to the eigen-decomposition (a
+// Schur complement that is not positive semi-definite to rounding), this one keeps the complement as it is.
+bool MarginalizeInformation(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                            const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior);
 
 // Rows [row_begin, row_end) of a prior's r + J dx over its blocks from `first_block` on (J must be zero in
 // those rows left of that block's columns); by default all of it.

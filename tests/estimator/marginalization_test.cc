@@ -223,6 +223,18 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
 
   LinearPrior from_information;
   ASSERT_TRUE(Marginalize(first.get(), terms_b, dropped_b, 1e-8, &from_information));
+  // In information form only: the same H and g, bit for bit (the Cholesky succeeds here), and no J or r.
+  LinearPrior information_only;
+  ASSERT_TRUE(MarginalizeInformation(first.get(), terms_b, dropped_b, 1e-8, &information_only));
+  EXPECT_EQ(information_only.H, from_information.H);
+  EXPECT_EQ(information_only.g, from_information.g);
+  EXPECT_EQ(information_only.J.size(), 0);
+  EXPECT_EQ(information_only.r.size(), 0);
+  ASSERT_EQ(information_only.blocks.size(), from_information.blocks.size());
+  for (std::size_t k = 0; k < information_only.blocks.size(); ++k) {
+    EXPECT_EQ(information_only.blocks[k].address, from_information.blocks[k].address);
+    EXPECT_EQ(information_only.blocks[k].x0, from_information.blocks[k].x0);
+  }
   const MarginalizationFactor factor(first);
   const std::vector<double*> factor_blocks = factor.parameter_blocks();
   std::vector<MarginalizationTerm> with_factor = {
