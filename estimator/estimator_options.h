@@ -285,9 +285,10 @@ struct EstimatorOptions {
   // The estimator solves at most this many camera frames per second, from the first frame on (0: every
   // frame). A frame is solved when at least 0.9 of the period has passed since the last one the cap let
   // through (solved_frames.h); the others are left out. VINS-Mono's EuRoC configuration feeds its estimator
-  // 10 frames per second of the camera's 20 (`freq: 10`), and 10 is the default: on every set a better or
-  // equal mean ATE at under half the CPU of every frame (docs/results/2026-12-estimator-speed.md, "Sixth
-  // round" and "Ninth round").
+  // 10 frames per second of the camera's 20 (`freq: 10`), and 10 is the default: on every set without
+  // glitches or with them removed a better or equal mean ATE at under half the CPU of every frame, but
+  // unremoved large glitches cost more (docs/results/2026-12-estimator-speed.md, "Sixth round" and "Ninth
+  // round").
   double max_frame_rate_hz = 10.0;
   // Under max_frame_rate_hz, output each frame left out as the IMU's prediction from the newest solved
   // state, without a covariance, so the trajectory keeps the camera's rate. Off (the default), the

@@ -90,13 +90,13 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
   };
   try {
     bool tracking = false;  // the newest solved frame was tracked
-    // The cap's pace counts from the last frame it let through, so that the frames solved after flagged
-    // samples do not shift it: the trajectory has the paced frames, at the same rate in every run.
-    std::optional<int64_t> last_solved_ns, last_paced_ns;
+    // The trajectory has the paced frames, at the same rate in every run.
+    FramePace pace(options.max_frame_rate_hz);
+    std::optional<int64_t> last_solved_ns;
     for (const CameraFrame& frame : input.frames) {
       if (!ImuCovers(imu, frame.t_ns)) continue;
       ++result.frames;
-      const bool paced = !last_paced_ns || RateAllows(*last_paced_ns, frame.t_ns, options.max_frame_rate_hz);
+      const bool paced = pace.Take(frame.t_ns);
       const bool after_flagged = !paced && options.solve_flagged_frames &&
                                  AnyFlaggedSample(imu, flagged, *last_solved_ns, frame.t_ns);
       if (!paced && !after_flagged) {
@@ -106,7 +106,6 @@ EstimatorResult RunEstimator(const EstimatorOptions& options, const EstimatorInp
       }
       ++result.solved_frames;
       last_solved_ns = frame.t_ns;
-      if (paced) last_paced_ns = frame.t_ns;
       const FrameStatus status =
           estimator.AddFrame(frame.t_ns, NormalizedFeatures(frame, input.camera), imu, &trust.variance_scale);
       tracking = status == FrameStatus::kTracking;

@@ -13,15 +13,13 @@
 namespace vigil::estimator {
 namespace {
 
-// The frames a tracking estimator solves from a camera at camera_hz: every frame, then each the cap allows.
+// The frames the cap's pace takes from a camera at camera_hz (the first one at 0, the others jittered).
 std::vector<int> Solved(double camera_hz, int count, double max_rate_hz, int64_t jitter_ns = 0) {
-  std::vector<int> solved{0};
-  int64_t last_ns = 0;
-  for (int k = 1; k < count; ++k) {
-    const int64_t t_ns = static_cast<int64_t>(k * 1e9 / camera_hz) + (k % 2 == 0 ? jitter_ns : -jitter_ns);
-    if (!RateAllows(last_ns, t_ns, max_rate_hz)) continue;
-    last_ns = t_ns;
-    solved.push_back(k);
+  std::vector<int> solved;
+  FramePace pace(max_rate_hz);
+  for (int k = 0; k < count; ++k) {
+    const int64_t jitter = k == 0 ? 0 : (k % 2 == 0 ? jitter_ns : -jitter_ns);
+    if (pace.Take(static_cast<int64_t>(k * 1e9 / camera_hz) + jitter)) solved.push_back(k);
   }
   return solved;
 }
