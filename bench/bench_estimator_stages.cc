@@ -72,21 +72,23 @@ void BM_Covariance(benchmark::State& state, const Window& window) {
   });
 }
 
-void BM_Marginalize(benchmark::State& state, const Window& window) {
+void BM_Marginalize(benchmark::State& state, const Window& window, bool general) {
   OnWindow(state, window, [&](EstimatorStages& stages) {
     for (auto _ : state)
-      if (!stages.MarginalizeOldest()) state.SkipWithError("the marginalization failed");
+      if (!stages.MarginalizeOldest(general)) state.SkipWithError("the marginalization failed");
   });
 }
 
 BENCHMARK_CAPTURE(BM_Solve, paper_dense, kPaper, SolverBackend::kDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, paper_ceres, kPaper, SolverBackend::kCeres)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, paper, kPaper)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Marginalize, paper, kPaper)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, paper, kPaper, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, paper_general, kPaper, true)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, semireal_dense, kSemiReal, SolverBackend::kDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, semireal_ceres, kSemiReal, SolverBackend::kCeres)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Marginalize, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, semireal, kSemiReal, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, semireal_general, kSemiReal, true)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vigil::estimator

@@ -41,12 +41,16 @@ class EstimatorStages {
                                             : e_.Optimize(/*marginalize_oldest_next=*/true, &reason);
   }
   std::optional<Matrix6d> Covariance() { return e_.NewestPoseCovariance(); }
-  // The prior that marginalizing the oldest frame would keep; false when it fails.
-  bool MarginalizeOldest() {
+  // The prior that marginalizing the oldest frame would keep, as the estimator builds it (in the window's
+  // layout) or by the general elimination; false when it fails.
+  bool MarginalizeOldest(bool general) {
     const Estimator::OldestFrameTerms terms = e_.TermsOfOldest();
+    const double threshold = e_.options_.window.marginalization_eigen_threshold;
     LinearPrior prior;
-    return Marginalize(e_.prior_.get(), terms.terms, terms.dropped,
-                       e_.options_.window.marginalization_eigen_threshold, &prior);
+    if (general)
+      return Marginalize(e_.prior_.get(), GeneralTerms(terms.frame), GeneralDroppedBlocks(terms.frame),
+                         threshold, &prior);
+    return MarginalizeOldestFrame(e_.prior_.get(), terms.frame, threshold, PriorForm::kSquareRoot, &prior);
   }
 
  private:

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -33,6 +34,7 @@
 #include "estimator/imu_gating.h"
 #include "estimator/initializer.h"
 #include "estimator/marginalization.h"
+#include "estimator/oldest_frame_marginalization.h"
 #include "estimator/pose_covariance.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/preintegration.h"
@@ -159,23 +161,25 @@ class Estimator {
   Failure DetectFailure(const NavState& previous) const;
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
-  // The factors that involve the oldest frame (window size >= 2), what its marginalization eliminates (its
-  // states and the depths of the usable tracks anchored in it) and those tracks' ids; `costs` owns the
-  // factors built for it.
+  // The factors that involve the oldest frame (window size >= 2), with the usable tracks anchored in it,
+  // whose depths its marginalization eliminates, and those tracks' ids; `costs` owns the factors built for
+  // it.
   struct OldestFrameTerms {
     std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-    std::vector<MarginalizationTerm> terms;
-    DroppedBlocks dropped;
+    OldestFrame frame;
     std::vector<int> tracks;
   };
   OldestFrameTerms TermsOfOldest();
   void MarginalizeOldest(bool with_prior);
   void MarginalizeSecondNewest(bool with_prior);
-  // prior_ := the marginalization of `dropped` from prior_ and `terms`; dropped (and counted) when that
-  // fails.
-  void KeepPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped);
-  // The same for anchored_prior_, which starts as the gauge on the oldest frame when it is null.
-  void KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped);
+  // A marginalization of the window: the prior it leaves from `previous` (may be null), in `form`; false
+  // when it fails.
+  using PriorUpdate = std::function<bool(const LinearPrior* previous, PriorForm form, LinearPrior* prior)>;
+  // prior_ := `update` of prior_ (square-root form); dropped (and counted) when that fails.
+  void KeepPrior(const PriorUpdate& update);
+  // anchored_prior_ := `update` of it (information form), starting from the gauge on the oldest frame when it
+  // is null.
+  void KeepAnchoredPrior(const PriorUpdate& update);
   void Reset();
   // The newest pose's covariance from the window's information (estimator_covariance.cc).
   std::optional<Matrix6d> NewestPoseCovariance();

@@ -1,5 +1,6 @@
 // Sliding the window: the oldest frame (after a keyframe) or the second newest frame leaves it.
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "estimator/estimator.h"
@@ -8,10 +9,9 @@
 
 namespace vigil::estimator {
 
-void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms, const DroppedBlocks& dropped) {
+void Estimator::KeepPrior(const PriorUpdate& update) {
   auto prior = std::make_shared<LinearPrior>();
-  if (Marginalize(prior_.get(), terms, dropped, options_.window.marginalization_eigen_threshold,
-                  prior.get())) {
+  if (update(prior_.get(), PriorForm::kSquareRoot, prior.get())) {
     prior_ = std::move(prior);
   } else {
     prior_.reset();
@@ -19,14 +19,12 @@ void Estimator::KeepPrior(const std::vector<MarginalizationTerm>& terms, const D
   }
 }
 
-void Estimator::KeepAnchoredPrior(const std::vector<MarginalizationTerm>& terms,
-                                  const DroppedBlocks& dropped) {
+void Estimator::KeepAnchoredPrior(const PriorUpdate& update) {
   const LinearPrior gauge = GaugePrior(window_.front()->pose);
   const LinearPrior* previous = anchored_prior_ ? anchored_prior_.get() : &gauge;
   auto anchored = std::make_shared<LinearPrior>();
   // Only the pose covariance reads it, as information: no square-root form.
-  if (MarginalizeInformation(previous, terms, dropped, options_.window.marginalization_eigen_threshold,
-                             anchored.get()))
+  if (update(previous, PriorForm::kInformation, anchored.get()))
     anchored_prior_ = std::move(anchored);
   else
     anchored_prior_.reset();
@@ -48,24 +46,29 @@ void Estimator::AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres:
 
 Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
   OldestFrameTerms out;
+  OldestFrame& frame = out.frame;
+  for (const auto& f : window_) {
+    frame.poses.push_back(f->pose);
+    frame.speed_biases.push_back(f->speed_bias);
+  }
   Frame& oldest = *window_.front();
   Frame& second = *window_[1];
-  out.dropped = {oldest.pose, oldest.speed_bias};
-  if (bias_prior_) out.terms.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
+  if (bias_prior_) frame.factors.push_back({bias_prior_.get(), nullptr, {oldest.speed_bias}});
   auto factor = std::make_unique<ImuFactor>(*second.imu_from_prev, g_W_);
-  out.terms.push_back(
+  frame.factors.push_back(
       {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
   out.costs.push_back(std::move(factor));
-  AppendOldestZeroVelocityTerms(&out.costs, &out.terms);
+  AppendOldestZeroVelocityTerms(&out.costs, &frame.factors);
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
     if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
-    out.dropped.push_back(&track.inv_depth);
+    reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
+    std::vector<WindowInformation::Reprojection>& terms = frame.tracks.emplace_back();
+    for (const ReprojectionTerm& term : reprojections) terms.push_back({term.factor, term.blocks});
     out.tracks.push_back(id);
   }
-  for (const ReprojectionTerm& term : reprojections)
-    out.terms.push_back({term.factor, &loss_, {term.blocks.begin(), term.blocks.end()}});
+  frame.reprojection_loss = &loss_;
   return out;
 }
 
@@ -74,8 +77,14 @@ void Estimator::MarginalizeOldest(bool with_prior) {
   std::vector<int> restarted;  // tracks whose observations all went into the prior
   if (with_prior && window_.size() >= 2) {
     const OldestFrameTerms oldest_terms = TermsOfOldest();
-    KeepPrior(oldest_terms.terms, oldest_terms.dropped);
-    if (options_.pose_covariance) KeepAnchoredPrior(oldest_terms.terms, oldest_terms.dropped);
+    // Its terms linearized once, for both priors.
+    const OldestFrameMarginalization marginalization(oldest_terms.frame,
+                                                     options_.window.marginalization_eigen_threshold);
+    const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
+      return marginalization.Prior(previous, form, prior);
+    };
+    KeepPrior(update);
+    if (options_.pose_covariance) KeepAnchoredPrior(update);
     if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted = oldest_terms.tracks;
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
@@ -89,13 +98,20 @@ void Estimator::MarginalizeSecondNewest(bool with_prior) {
   const std::size_t n = window_.size();
   Frame& second_newest = *window_[n - 2];
   Frame& newest = *window_[n - 1];
+  // Only a prior is over its states: they are eliminated from it.
+  const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
+    SchurComplement schur;
+    return EliminateDropped(previous, {}, {second_newest.pose, second_newest.speed_bias},
+                            options_.window.marginalization_eigen_threshold, &schur) &&
+           PriorOfSchurComplement(std::move(schur), options_.window.marginalization_eigen_threshold, form,
+                                  prior);
+  };
   if (with_prior && prior_ &&
-      (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias))) {
-    KeepPrior({}, {second_newest.pose, second_newest.speed_bias});
-  }
+      (prior_->Involves(second_newest.pose) || prior_->Involves(second_newest.speed_bias)))
+    KeepPrior(update);
   if (with_prior && anchored_prior_ &&
       (anchored_prior_->Involves(second_newest.pose) || anchored_prior_->Involves(second_newest.speed_bias)))
-    KeepAnchoredPrior({}, {second_newest.pose, second_newest.speed_bias});
+    KeepAnchoredPrior(update);
   // The newest frame's interval now starts at the frame before the dropped one: still when both were.
   newest.stationary = newest.stationary && second_newest.stationary;
   // The newest frame's IMU now starts at the frame before the dropped one.

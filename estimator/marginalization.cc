@@ -251,31 +251,6 @@ bool AddTerms(const std::vector<MarginalizationTerm>& terms, const Layout& layou
   return true;
 }
 
-// The kept blocks' Schur complement A (symmetric), bk of the dense equations (scalars already eliminated):
-// the other dropped blocks (the first m columns) through their pseudo-inverse by eigen-decomposition. With
-// none of those (m = 0) the equations' dense part is moved into A and bk, not copied.
-void EliminateDenseDropped(NormalEquations* eq, int m, int n, double eigen_threshold, Eigen::MatrixXd* A,
-                           Eigen::VectorXd* bk) {
-  if (m == 0) {  // nothing to eliminate: the equations themselves, their lower triangle filled in
-    *A = std::move(eq->H);
-    *bk = std::move(eq->b);
-    for (int j = 0; j + 1 < n; ++j) A->col(j).tail(n - j - 1) = A->row(j).tail(n - j - 1).transpose();
-    return;
-  }
-  const Eigen::MatrixXd& H = eq->H;
-  *A = H.bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
-  *bk = eq->b.tail(n);
-  const Eigen::MatrixXd Hmm = H.topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
-  // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
-  const Eigen::MatrixXd Hmm_inv = m == kPoseTangentSize + kSpeedBiasSize
-                                      ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
-                                      : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
-  const Eigen::MatrixXd Hkm_Hmm_inv = H.topRightCorner(m, n).transpose() * Hmm_inv;
-  A->noalias() -= Hkm_Hmm_inv * H.topRightCorner(m, n);
-  bk->noalias() -= Hkm_Hmm_inv * eq->b.head(m);
-  *A = (0.5 * (*A + A->transpose())).eval();  // the product is symmetric up to its rounding
-}
-
 // The kept blocks with their current values as the prior's linearization point x0.
 std::vector<LinearPrior::Block> KeptBlocks(const std::vector<Column>& columns) {
   std::vector<LinearPrior::Block> blocks;
@@ -292,6 +267,28 @@ std::vector<LinearPrior::Block> KeptBlocks(const std::vector<Column>& columns) {
 }
 
 }  // namespace
+
+void EliminateLeading(Eigen::MatrixXd* H, Eigen::VectorXd* b, int m, double eigen_threshold,
+                      Eigen::MatrixXd* A, Eigen::VectorXd* bk) {
+  const int n = static_cast<int>(H->rows()) - m;
+  if (m == 0) {  // nothing to eliminate: the equations themselves, their lower triangle filled in
+    *A = std::move(*H);
+    *bk = std::move(*b);
+    for (int j = 0; j + 1 < n; ++j) A->col(j).tail(n - j - 1) = A->row(j).tail(n - j - 1).transpose();
+    return;
+  }
+  *A = H->bottomRightCorner(n, n).selfadjointView<Eigen::Upper>();
+  *bk = b->tail(n);
+  const Eigen::MatrixXd Hmm = H->topLeftCorner(m, m).selfadjointView<Eigen::Upper>();
+  // A dropped frame's pose and speed-bias (15) is the usual case: a fixed-size decomposition.
+  const Eigen::MatrixXd Hmm_inv = m == kPoseTangentSize + kSpeedBiasSize
+                                      ? PseudoInverse<kPoseTangentSize + kSpeedBiasSize>(Hmm, eigen_threshold)
+                                      : PseudoInverse<Eigen::Dynamic>(Hmm, eigen_threshold);
+  const Eigen::MatrixXd Hkm_Hmm_inv = H->topRightCorner(m, n).transpose() * Hmm_inv;
+  A->noalias() -= Hkm_Hmm_inv * H->topRightCorner(m, n);
+  bk->noalias() -= Hkm_Hmm_inv * b->head(m);
+  *A = (0.5 * (*A + A->transpose())).eval();  // the product is symmetric up to its rounding
+}
 
 void PriorInformationAtCurrentValues(const LinearPrior& prior, Eigen::MatrixXd* H, Eigen::VectorXd* g) {
   std::vector<const double*> values;
@@ -324,25 +321,18 @@ bool EliminateDropped(const LinearPrior* previous, const std::vector<Marginaliza
   if (previous != nullptr) AddPreviousPrior(*previous, layout, &eq);
   if (!AddTerms(terms, layout, &eq)) return false;
   eq.EliminateScalars(layout.columns, eigen_threshold);
-  EliminateDenseDropped(&eq, layout.m, layout.n, eigen_threshold, &schur->H, &schur->g);
+  EliminateLeading(&eq.H, &eq.b, layout.m, eigen_threshold, &schur->H, &schur->g);
   schur->blocks = KeptBlocks(layout.columns);
   return schur->H.allFinite() && schur->g.allFinite();
 }
 
-bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                 const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior) {
-  SchurComplement schur;
-  if (!EliminateDropped(previous, terms, dropped, eigen_threshold, &schur) ||
-      !SquareRootForm(schur.H, schur.g, eigen_threshold, prior))
-    return false;
-  prior->blocks = std::move(schur.blocks);
-  return prior->J.allFinite() && prior->r.allFinite();
-}
-
-bool MarginalizeInformation(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
-                            const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior) {
-  SchurComplement schur;
-  if (!EliminateDropped(previous, terms, dropped, eigen_threshold, &schur)) return false;
+bool PriorOfSchurComplement(SchurComplement schur, double eigen_threshold, PriorForm form,
+                            LinearPrior* prior) {
+  if (form == PriorForm::kSquareRoot) {
+    if (!SquareRootForm(schur.H, schur.g, eigen_threshold, prior)) return false;
+    prior->blocks = std::move(schur.blocks);
+    return prior->J.allFinite() && prior->r.allFinite();
+  }
   const double ridge = Ridge(schur.H, eigen_threshold);
   schur.H.diagonal().array() += ridge;
   prior->blocks = std::move(schur.blocks);
@@ -351,6 +341,20 @@ bool MarginalizeInformation(const LinearPrior* previous, const std::vector<Margi
   prior->J.resize(0, 0);
   prior->r.resize(0);
   return true;
+}
+
+bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                 const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior) {
+  SchurComplement schur;
+  return EliminateDropped(previous, terms, dropped, eigen_threshold, &schur) &&
+         PriorOfSchurComplement(std::move(schur), eigen_threshold, PriorForm::kSquareRoot, prior);
+}
+
+bool MarginalizeInformation(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
+                            const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior) {
+  SchurComplement schur;
+  return EliminateDropped(previous, terms, dropped, eigen_threshold, &schur) &&
+         PriorOfSchurComplement(std::move(schur), eigen_threshold, PriorForm::kInformation, prior);
 }
 
 MarginalizationFactor::MarginalizationFactor(std::shared_ptr<const LinearPrior> prior)

@@ -108,6 +108,21 @@ struct SchurComplement {
 bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                       const DroppedBlocks& dropped, double eigen_threshold, SchurComplement* schur);
 
+// The Schur complement A, bk of the symmetric H (its upper triangle read), b over its columns from m on, once
+// the first m are eliminated through their pseudo-inverse by eigen-decomposition (eigenvalues at or below
+// `eigen_threshold` taken as zero). H and b are left in an unspecified state (with m = 0 they are moved).
+void EliminateLeading(Eigen::MatrixXd* H, Eigen::VectorXd* b, int m, double eigen_threshold,
+                      Eigen::MatrixXd* A, Eigen::VectorXd* bk);
+
+// How a prior is kept: square-root form (J, r, and H, g), the form a solve evaluates as a factor; or
+// information form only (H with the square-root form's ridge, g; J and r empty), for a prior that is only
+// read as information (PriorInformationAtCurrentValues).
+enum class PriorForm { kSquareRoot, kInformation };
+
+// The prior of a Schur complement in `form`. Square-root form: false when it has no rows or is not finite.
+bool PriorOfSchurComplement(SchurComplement schur, double eigen_threshold, PriorForm form,
+                            LinearPrior* prior);
+
 // EliminateDropped() in square-root form. The same arguments; false also when the form has no rows.
 bool Marginalize(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                  const DroppedBlocks& dropped, double eigen_threshold, LinearPrior* prior);
