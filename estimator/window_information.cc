@@ -39,6 +39,9 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
     if (columns.back().column < 0) return false;
     total += columns.back().tangent;
   }
+  if (rows == kTwoFrameRows &&
+      sizes == std::vector<int32_t>{kPoseSize, kSpeedBiasSize, kPoseSize, kSpeedBiasSize})
+    return AddTwoFrameFactor(cost, loss, blocks, columns);
   for (const int32_t size : sizes) ambient_total += size;
   std::vector<double> jacobian_storage(static_cast<std::size_t>(rows) * ambient_total);
   std::vector<double*> jacobians;
@@ -57,6 +60,61 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
   if (!J.allFinite()) return false;
   Robustify(loss, r, J);
   Accumulate(columns, J.transpose() * J, J.transpose() * r);
+  return true;
+}
+
+namespace {
+
+// J.middleCols(first_a, A)^T J.middleCols(first_b, B) added to the upper block triangle of H at the blocks'
+// window columns (column_a, column_b): at (column_a, column_b) when column_a <= column_b (a diagonal block
+// when they are equal), else transposed at (column_b, column_a). A lazy product: at these sizes the blocked
+// kernel's set-up costs more than the products.
+template <int A, int B, class Jacobian>
+void AddUpperBlock(const Jacobian& J, int first_a, int first_b, int column_a, int column_b,
+                   Eigen::MatrixXd* H) {
+  if (column_a <= column_b)
+    H->block<A, B>(column_a, column_b).noalias() +=
+        J.template middleCols<A>(first_a).transpose().lazyProduct(J.template middleCols<B>(first_b));
+  else
+    H->block<B, A>(column_b, column_a).noalias() +=
+        J.template middleCols<B>(first_b).transpose().lazyProduct(J.template middleCols<A>(first_a));
+}
+
+}  // namespace
+
+bool WindowInformation::AddTwoFrameFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                                          const std::vector<double*>& blocks,
+                                          const std::vector<BlockColumn>& columns) {
+  constexpr int kPose = kPoseTangentSize, kSpeedBias = kSpeedBiasSize;
+  Eigen::Matrix<double, kTwoFrameRows, kPoseSize, Eigen::RowMajor> J_pose_0, J_pose_1;
+  Eigen::Matrix<double, kTwoFrameRows, kSpeedBias, Eigen::RowMajor> J_speed_bias_0, J_speed_bias_1;
+  Eigen::Matrix<double, kTwoFrameRows, 1> r;
+  double* jacobians[4] = {J_pose_0.data(), J_speed_bias_0.data(), J_pose_1.data(), J_speed_bias_1.data()};
+  if (!cost.Evaluate(blocks.data(), r.data(), jacobians) || !r.allFinite()) return false;
+  // d r / d [pose 0 tangent, speed-bias 0, pose 1 tangent, speed-bias 1]
+  Eigen::Matrix<double, kTwoFrameRows, 2 * kFrameSize, Eigen::RowMajor> J;
+  J << J_pose_0.leftCols<kPose>(), J_speed_bias_0, J_pose_1.leftCols<kPose>(), J_speed_bias_1;
+  if (!J.allFinite()) return false;
+  Robustify(loss, r, J);
+  const int p0 = columns[0].column, s0 = columns[1].column, p1 = columns[2].column, s1 = columns[3].column;
+  if (p0 == p1 || s0 == s1) return false;  // two frames: distinct blocks
+  lower_stale_ = true;
+  constexpr int jp0 = 0, js0 = kPose, jp1 = kFrameSize, js1 = kFrameSize + kPose;  // their columns in J
+  g_.segment<kPose>(p0).noalias() += J.middleCols<kPose>(jp0).transpose() * r;
+  g_.segment<kSpeedBias>(s0).noalias() += J.middleCols<kSpeedBias>(js0).transpose() * r;
+  g_.segment<kPose>(p1).noalias() += J.middleCols<kPose>(jp1).transpose() * r;
+  g_.segment<kSpeedBias>(s1).noalias() += J.middleCols<kSpeedBias>(js1).transpose() * r;
+  // Each pair of blocks once, into the upper block triangle (MirrorUpperTriangles fills the lower one).
+  AddUpperBlock<kPose, kPose>(J, jp0, jp0, p0, p0, &H_);
+  AddUpperBlock<kPose, kSpeedBias>(J, jp0, js0, p0, s0, &H_);
+  AddUpperBlock<kPose, kPose>(J, jp0, jp1, p0, p1, &H_);
+  AddUpperBlock<kPose, kSpeedBias>(J, jp0, js1, p0, s1, &H_);
+  AddUpperBlock<kSpeedBias, kSpeedBias>(J, js0, js0, s0, s0, &H_);
+  AddUpperBlock<kSpeedBias, kPose>(J, js0, jp1, s0, p1, &H_);
+  AddUpperBlock<kSpeedBias, kSpeedBias>(J, js0, js1, s0, s1, &H_);
+  AddUpperBlock<kPose, kPose>(J, jp1, jp1, p1, p1, &H_);
+  AddUpperBlock<kPose, kSpeedBias>(J, jp1, js1, p1, s1, &H_);
+  AddUpperBlock<kSpeedBias, kSpeedBias>(J, js1, js1, s1, s1, &H_);
   return true;
 }
 

@@ -97,12 +97,18 @@ class WindowInformation {
     int tangent = 0;
   };
   BlockColumn ColumnOf(const double* block) const;
+  // AddFactor for a factor of kTwoFrameRows rows over (pose, speed-bias, pose, speed-bias) of two frames (the
+  // IMU factor): in fixed sizes, each pair of its blocks once, into the upper block triangle.
+  static constexpr int kTwoFrameRows = 15;
+  bool AddTwoFrameFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                         const std::vector<double*>& blocks, const std::vector<BlockColumn>& columns);
   // Adds H and g, laid out over `columns` in order (each block's tangent rows), to the window's.
   void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
                   const Eigen::VectorXd& g);
 
-  // AddTrack adds each pair of a track's poses once, to the upper block triangle of H and of the depth fill
-  // (half the products of a track's Schur fill); the accessors copy it to the lower triangle first.
+  // AddTrack and AddTwoFrameFactor add each pair of blocks once, to the upper block triangle of H (AddTrack
+  // also of the depth fill: half the products of a track's Schur fill); the accessors copy it to the lower
+  // triangle first.
   void MirrorUpperTriangles() const;
 
   std::vector<double*> pose_blocks_;
