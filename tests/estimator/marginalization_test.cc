@@ -16,6 +16,7 @@
 #include "estimator/marginalization.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/reprojection_factor.h"
+#include "tests/estimator/synthetic_window.h"
 
 namespace vigil::estimator {
 namespace {
@@ -252,6 +253,32 @@ TEST(MarginalizationTest, PreviousPriorEntersAsItsFactorWould) {
   EXPECT_GT(g.norm(), 1e-2);                // the move made a gradient to compare
   EXPECT_LT((from_information.J.transpose() * from_information.J - H).norm(), 1e-9 * H.norm());
   EXPECT_LT((from_information.J.transpose() * from_information.r - g).norm(), 1e-9 * g.norm());
+}
+
+// A prior alone (a frame dropped between keyframes) is eliminated from its information at the current values:
+// the same as the general elimination of the prior entered as its factor.
+TEST(MarginalizationTest, APriorAloneGivesWhatItsFactorGives) {
+  testing::SyntheticWindow w(11);  // a prior on frame 1's pose and frame 2's states, away from its x0
+  const auto prior = std::make_shared<LinearPrior>(w.prior);
+  const DroppedBlocks dropped = {w.pose_blocks[2]};
+  SchurComplement alone;
+  ASSERT_TRUE(EliminateDropped(prior.get(), {}, dropped, 1e-8, &alone));
+  const MarginalizationFactor factor(prior);
+  const std::vector<double*> factor_blocks = factor.parameter_blocks();
+  SchurComplement from_factor;
+  ASSERT_TRUE(EliminateDropped(nullptr, {{&factor, nullptr, {factor_blocks.begin(), factor_blocks.end()}}},
+                               dropped, 1e-8, &from_factor));
+  ASSERT_EQ(alone.blocks.size(), 2u);
+  ASSERT_EQ(from_factor.blocks.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(alone.blocks[k].address, from_factor.blocks[k].address);
+    EXPECT_EQ(alone.blocks[k].x0, from_factor.blocks[k].x0);
+  }
+  EXPECT_EQ(alone.blocks[0].address, w.pose_blocks[1]);
+  EXPECT_EQ(alone.blocks[1].address, w.speed_bias_blocks[2]);
+  EXPECT_GT(from_factor.g.norm(), 1e-2);  // away from x0: a gradient to compare
+  EXPECT_LT((alone.H - from_factor.H).norm(), 1e-10 * from_factor.H.norm());
+  EXPECT_LT((alone.g - from_factor.g).norm(), 1e-10 * from_factor.g.norm());
 }
 
 // The rows of J below its diagonal are zero: what PriorFactors() relies on.
