@@ -21,7 +21,8 @@ std::unique_ptr<Initializer> MakeInitializer(const EstimatorOptions& options, co
       auto vins = std::make_unique<VinsInitializer>(options.vins, input.camera, input.gravity_mps2,
                                                     options.window.size + 1);
       if (!options.zero_velocity.static_init) return vins;
-      return std::make_unique<StaticInitializer>(std::move(vins), options.zero_velocity, input.camera.fx);
+      return std::make_unique<StaticInitializer>(std::move(vins), StaticStartTests(options.zero_velocity),
+                                                 input.camera.fx);
     }
   }
   throw InputError("estimator.init: unknown initialization mode");
