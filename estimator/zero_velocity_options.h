@@ -54,8 +54,8 @@ struct ZeroVelocityOptions {
             "features are within it (0: image test off) [px]",
             Bounds::NonNegative());
     v.Field("static_init_pixel_std_px", static_init_pixel_std_px,
-            "static start: the image test's track noise std per axis, for the whole initialization window "
-            "(0: image test off) [px]",
+            "static start: the image test's track noise std per axis, for the initialization window and "
+            "the hold after it (0: image test off) [px]",
             Bounds::NonNegative());
     v.Field("min_features", min_features, "image test: fewest features seen in both frames of an interval",
             Bounds::AtLeast(1));
