@@ -129,11 +129,10 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
                                                 imu_rate_hz_, imu_variance_scale);
     if (initialized_) Predict(frame.get());
     if (NeedsStationarity()) {
-      // The static start's tests before initialization and while it holds; the update's after.
-      const bool static_start = options_.zero_velocity.static_init && (!initialized_ || holding_still_);
+      // The static start's tests in its time; the update's after.
       frame->stationary = IntervalIsStationary(
           window_.back()->features_n, features_n, *frame->imu_from_prev, camera_.fx,
-          static_start ? StaticStartTests(options_.zero_velocity) : options_.zero_velocity);
+          InStaticStart() ? StaticStartTests(options_.zero_velocity) : options_.zero_velocity);
     }
   }
   holding_still_ = holding_still_ && frame->stationary;

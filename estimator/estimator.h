@@ -141,9 +141,10 @@ class Estimator {
   bool ZeroVelocityActive() const { return options_.zero_velocity.update || holding_still_; }
   // Whether a new frame's interval must be tested for standing still: for the update, and for a static start
   // (the window before initialization, and while it is held still). The flags are read nowhere else.
-  bool NeedsStationarity() const {
-    return options_.zero_velocity.update ||
-           (options_.zero_velocity.static_init && (!initialized_ || holding_still_));
+  bool NeedsStationarity() const { return options_.zero_velocity.update || InStaticStart(); }
+  // The static start's time: before initialization, and while it holds the window still.
+  bool InStaticStart() const {
+    return options_.zero_velocity.static_init && (!initialized_ || holding_still_);
   }
   // The zero-velocity terms that involve the oldest frame (for its marginalization); `costs` owns them.
   void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,

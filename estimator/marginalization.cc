@@ -266,6 +266,40 @@ std::vector<LinearPrior::Block> KeptBlocks(const std::vector<Column>& columns) {
   return blocks;
 }
 
+// EliminateDropped for a prior alone (a frame dropped between keyframes): its information at the current
+// values with the dropped blocks' columns first, in the order the general layout gives them.
+bool EliminateFromPrior(const LinearPrior& previous, const DroppedBlocks& dropped, double eigen_threshold,
+                        SchurComplement* schur) {
+  Eigen::MatrixXd H_prior;
+  Eigen::VectorXd g_prior;
+  PriorInformationAtCurrentValues(previous, &H_prior, &g_prior);
+  std::vector<int> first_column(previous.blocks.size());
+  for (std::size_t k = 0, c = 0; k < previous.blocks.size(); c += previous.blocks[k].tangent, ++k)
+    first_column[k] = static_cast<int>(c);
+  auto is_dropped = [&](const LinearPrior::Block& b) {
+    return std::find(dropped.begin(), dropped.end(), b.address) != dropped.end();
+  };
+  std::vector<int> columns;
+  int m = 0;
+  for (const bool dropped_pass : {true, false})
+    for (std::size_t k = 0; k < previous.blocks.size(); ++k) {
+      const LinearPrior::Block& b = previous.blocks[k];
+      if (is_dropped(b) != dropped_pass) continue;
+      for (int i = 0; i < b.tangent; ++i) columns.push_back(first_column[k] + i);
+      if (dropped_pass) {
+        m += b.tangent;
+      } else {
+        schur->blocks.push_back(
+            {b.address, b.size, b.tangent, std::vector<double>(b.address, b.address + b.size)});
+      }
+    }
+  if (schur->blocks.empty()) return false;
+  Eigen::MatrixXd H = H_prior(columns, columns);
+  Eigen::VectorXd g = g_prior(columns);
+  EliminateLeading(&H, &g, m, eigen_threshold, &schur->H, &schur->g);
+  return schur->H.allFinite() && schur->g.allFinite();
+}
+
 }  // namespace
 
 void EliminateLeading(Eigen::MatrixXd* H, Eigen::VectorXd* b, int m, double eigen_threshold,
@@ -311,44 +345,6 @@ bool LinearPrior::Involves(const double* address) const {
     if (b.address == address) return true;
   return false;
 }
-
-namespace {
-
-// EliminateDropped for a prior alone (a frame dropped between keyframes): its information at the current
-// values with the dropped blocks' columns first, in the order the general layout gives them.
-bool EliminateFromPrior(const LinearPrior& previous, const DroppedBlocks& dropped, double eigen_threshold,
-                        SchurComplement* schur) {
-  Eigen::MatrixXd H_prior;
-  Eigen::VectorXd g_prior;
-  PriorInformationAtCurrentValues(previous, &H_prior, &g_prior);
-  std::vector<int> first_column(previous.blocks.size());
-  for (std::size_t k = 0, c = 0; k < previous.blocks.size(); c += previous.blocks[k].tangent, ++k)
-    first_column[k] = static_cast<int>(c);
-  auto is_dropped = [&](const LinearPrior::Block& b) {
-    return std::find(dropped.begin(), dropped.end(), b.address) != dropped.end();
-  };
-  std::vector<int> columns;
-  int m = 0;
-  for (const bool dropped_pass : {true, false})
-    for (std::size_t k = 0; k < previous.blocks.size(); ++k) {
-      const LinearPrior::Block& b = previous.blocks[k];
-      if (is_dropped(b) != dropped_pass) continue;
-      for (int i = 0; i < b.tangent; ++i) columns.push_back(first_column[k] + i);
-      if (dropped_pass) {
-        m += b.tangent;
-      } else {
-        schur->blocks.push_back(
-            {b.address, b.size, b.tangent, std::vector<double>(b.address, b.address + b.size)});
-      }
-    }
-  if (schur->blocks.empty()) return false;
-  Eigen::MatrixXd H = H_prior(columns, columns);
-  Eigen::VectorXd g = g_prior(columns);
-  EliminateLeading(&H, &g, m, eigen_threshold, &schur->H, &schur->g);
-  return schur->H.allFinite() && schur->g.allFinite();
-}
-
-}  // namespace
 
 bool EliminateDropped(const LinearPrior* previous, const std::vector<MarginalizationTerm>& terms,
                       const DroppedBlocks& dropped, double eigen_threshold, SchurComplement* schur) {

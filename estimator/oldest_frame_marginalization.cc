@@ -28,18 +28,10 @@ std::vector<double*> KeptBlocks(const LinearPrior* previous, const OldestFrame& 
   return kept;
 }
 
-// The window columns of a frame's block, as a LinearPrior block at its current value; false when the block is
-// not the window's.
-bool AsPriorBlock(const OldestFrame& oldest, double* block, int* column, LinearPrior::Block* out) {
-  for (int k = 0; k < static_cast<int>(oldest.poses.size()); ++k) {
-    const bool pose = oldest.poses[k] == block;
-    if (!pose && oldest.speed_biases[k] != block) continue;
-    const int size = pose ? kPoseSize : kSpeedBiasSize;
-    *column = pose ? WindowInformation::PoseColumn(k) : WindowInformation::SpeedBiasColumn(k);
-    *out = {block, size, TangentSizeOf(size), std::vector<double>(block, block + size)};
-    return true;
-  }
-  return false;
+// A kept block as a prior's block, at its current value; `tangent` as WindowInformation::ColumnOf gives it.
+LinearPrior::Block PriorBlock(double* block, int tangent) {
+  const int size = tangent == kPoseTangentSize ? kPoseSize : tangent;
+  return {block, size, tangent, std::vector<double>(block, block + size)};
 }
 
 }  // namespace
@@ -63,27 +55,32 @@ bool OldestFrameMarginalization::Prior(const LinearPrior* previous, PriorForm fo
   constexpr int kDropped = WindowInformation::kFrameSize;
   std::vector<int> columns(kDropped);
   for (int i = 0; i < kDropped; ++i) columns[i] = i;
+  // Where each block's columns start among `columns`: the oldest frame's, then each kept block's.
+  std::vector<std::pair<const double*, int>> first_column = {
+      {oldest_.poses.front(), WindowInformation::PoseColumn(0)},
+      {oldest_.speed_biases.front(), WindowInformation::SpeedBiasColumn(0)}};
   SchurComplement schur;
   for (double* block : KeptBlocks(previous, oldest_)) {
-    int column = 0;
-    if (!AsPriorBlock(oldest_, block, &column, &schur.blocks.emplace_back())) return false;
-    for (int i = 0; i < schur.blocks.back().tangent; ++i) columns.push_back(column + i);
+    const WindowInformation::BlockColumn window = information_.ColumnOf(block);
+    if (window.column < 0) return false;
+    first_column.emplace_back(block, static_cast<int>(columns.size()));
+    for (int i = 0; i < window.tangent; ++i) columns.push_back(window.column + i);
+    schur.blocks.push_back(PriorBlock(block, window.tangent));
   }
   if (schur.blocks.empty()) return false;
   Eigen::MatrixXd H = information_.H()(columns, columns);
   Eigen::VectorXd g = information_.g()(columns);
   if (previous != nullptr) {
-    // The previous prior at the current values, each of its blocks at its place among those columns.
+    // The previous prior at the current values, each of its blocks at its place among those columns (every
+    // one of them is the oldest frame's or kept).
     Eigen::MatrixXd H_prior;
     Eigen::VectorXd g_prior;
     PriorInformationAtCurrentValues(*previous, &H_prior, &g_prior);
     std::vector<int> at;  // the prior's columns among `columns`
     for (const LinearPrior::Block& b : previous->blocks) {
-      int column = 0;
-      LinearPrior::Block unused;
-      if (!AsPriorBlock(oldest_, b.address, &column, &unused)) return false;
-      const int first = static_cast<int>(std::find(columns.begin(), columns.end(), column) - columns.begin());
-      for (int i = 0; i < b.tangent; ++i) at.push_back(first + i);
+      const auto it = std::find_if(first_column.begin(), first_column.end(),
+                                   [&](const auto& entry) { return entry.first == b.address; });
+      for (int i = 0; i < b.tangent; ++i) at.push_back(it->second + i);
     }
     H(at, at) += H_prior;
     g(at) += g_prior;

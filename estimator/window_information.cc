@@ -39,8 +39,8 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
     if (columns.back().column < 0) return false;
     total += columns.back().tangent;
   }
-  if (rows == kTwoFrameRows &&
-      sizes == std::vector<int32_t>{kPoseSize, kSpeedBiasSize, kPoseSize, kSpeedBiasSize})
+  static const std::vector<int32_t> kTwoFrameBlocks = {kPoseSize, kSpeedBiasSize, kPoseSize, kSpeedBiasSize};
+  if (rows == kTwoFrameRows && sizes == kTwoFrameBlocks)
     return AddTwoFrameFactor(cost, loss, blocks, columns);
   for (const int32_t size : sizes) ambient_total += size;
   std::vector<double> jacobian_storage(static_cast<std::size_t>(rows) * ambient_total);

@@ -78,6 +78,12 @@ class WindowInformation {
   }
   const Eigen::VectorXd& depth_fill_g() const { return fill_g_; }
 
+  // The first column of a window block and its tangent size; column -1 when it is not the window's.
+  struct BlockColumn {
+    int column = -1;
+    int tangent = 0;
+  };
+  BlockColumn ColumnOf(const double* block) const;
   int frames() const { return static_cast<int>(pose_blocks_.size()); }
   // Symmetric, both triangles filled.
   const Eigen::MatrixXd& H() const {
@@ -91,12 +97,6 @@ class WindowInformation {
   const Eigen::VectorXd& g() const { return g_; }
 
  private:
-  // The first column of a window block and its tangent size; column -1 when it is not the window's.
-  struct BlockColumn {
-    int column = -1;
-    int tangent = 0;
-  };
-  BlockColumn ColumnOf(const double* block) const;
   // AddFactor for a factor of kTwoFrameRows rows over (pose, speed-bias, pose, speed-bias) of two frames (the
   // IMU factor): in fixed sizes, each pair of its blocks once, into the upper block triangle.
   static constexpr int kTwoFrameRows = 15;

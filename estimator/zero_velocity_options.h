@@ -25,11 +25,10 @@ struct ZeroVelocityOptions {
   double probability = 0.99;  // chi-square quantile of both tests
   double pixel_std_px = 0.5;  // image test: the track noise per axis (0: image test off) [px]
   // The static start's image test (the initialization window, and the hold after it): the track noise per
-  // axis (0: image test off) [px]. As the estimator's
-  // reprojection noise (features.pixel_std_px), so that a still start is found on tracks noisier than
-  // pixel_std_px: on the semi-real V1_01 flight at 1.0 and 1.5 px, 0.5 px missed the 5.3 s stand and the
-  // moving initializer started from a window half still, then ran away
-  // (docs/results/2026-12-estimator-speed.md, "Tenth round").
+  // axis (0: image test off) [px]. As the estimator's reprojection noise (features.pixel_std_px), so that a
+  // still start is found on tracks noisier than pixel_std_px: on the semi-real V1_01 flight at 1.0 and 1.5
+  // px, 0.5 px missed the 5.3 s stand, and the moving initializer started from a window half still, then ran
+  // away (docs/results/2026-12-estimator-speed.md, "Tenth round").
   double static_init_pixel_std_px = 1.5;
   int min_features = 10;              // image test: fewest features seen in both frames
   double imu_noise_multiplier = 0.0;  // imu test: white-noise std scale (0: imu test off)
