@@ -1,7 +1,8 @@
 // The newest pose's covariance: the window's information at the current estimate (the same factors the
-// solve used, robust loss applied as Ceres does, with the anchored prior in place of the solve's), the
-// feature depths eliminated track by track (window_information.h), the gauge held at the run's first frame
-// (pose_covariance.h), its marginal from the factorization of window_factorization.h.
+// solve used, zero-velocity terms included, robust loss applied as Ceres does, with the anchored prior in
+// place of the solve's), the feature depths eliminated track by track (window_information.h), the gauge held
+// at the run's first frame (pose_covariance.h), its marginal from the factorization of
+// window_factorization.h.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -20,6 +21,11 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
     poses.push_back(f->pose);
     speed_biases.push_back(f->speed_bias);
   }
+  // The zero-velocity terms of the frames standing still: without them a window at rest, whose tracks have
+  // no parallax, holds no velocity and no translation, and has no covariance.
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+  std::vector<MarginalizationTerm> still_terms;
+  AppendZeroVelocityTerms(speed_biases, &costs, &still_terms);
   WindowInformation information(std::move(poses), std::move(speed_biases));
   if (bias_prior_ && !information.AddFactor(*bias_prior_, nullptr, {window_.front()->speed_bias}))
     return std::nullopt;
@@ -29,6 +35,11 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
             factor, nullptr,
             {window_[k - 1]->pose, window_[k - 1]->speed_bias, window_[k]->pose, window_[k]->speed_bias}))
       return std::nullopt;
+  }
+  std::vector<double*> blocks;
+  for (const MarginalizationTerm& term : still_terms) {
+    blocks.assign(term.blocks.begin(), term.blocks.end());
+    if (!information.AddFactor(*term.cost, term.loss, blocks)) return std::nullopt;
   }
   // Each track's reprojections, its depth eliminated: what is left is the information of the window's states.
   std::vector<ReprojectionTerm> reprojections;

@@ -220,6 +220,38 @@ TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
   EXPECT_GT(static_cast<int>(result.states.size()), result.solved_frames - 25);
 }
 
+// The covariance of the poses held still: the window at rest has no parallax, so its tracks hold no
+// translation, and only the zero-velocity terms the solve used give the velocity and position an
+// information. Without them in the covariance's window every pose of the hold had no covariance, and the
+// NEES was aligned at the first pose after the take-off instead of the first one.
+TEST(ZeroVelocityRunTest, TheHoldHasACovariance) {
+  const fs::path root = fs::path(VIGIL_SOURCE_DIR);
+  experiments::RunConfig config =
+      experiments::LoadRunConfig((root / "configs/recording_v1_01.yaml").string());
+  config.sim.duration_s = 9.0;
+  const Dataset data = sim::Simulate(config.sim, 1);
+  config.estimator.init = InitMode::kVins;
+  config.estimator.covariance_rate_hz = 0.0;  // at every solved frame
+  ASSERT_TRUE(config.estimator.zero_velocity.static_init);
+  ASSERT_TRUE(config.estimator.pose_covariance);
+  const EstimatorResult result =
+      RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+  ASSERT_TRUE(result.ok) << result.failure_reason;
+  ASSERT_EQ(result.pose_covariances.size(), result.states.size());
+  int still = 0;
+  double worst_std_m = 0.0;
+  for (std::size_t k = 0; k < result.states.size(); ++k) {
+    if (NsToS(result.states[k].t_ns - data.frames.front().t_ns) >= 5.0) break;
+    ++still;
+    const Matrix6d& P = result.pose_covariances[k];
+    ASSERT_TRUE(P.allFinite()) << "no covariance at state " << k;
+    worst_std_m = std::max(worst_std_m, std::sqrt(P.topLeftCorner<3, 3>().diagonal().maxCoeff()));
+  }
+  EXPECT_GT(still, 30);  // from 1.5 s to 5 s at 10 Hz
+  // Held by no-motion factors of 1 mm std to the run's first frame, a few of them apart.
+  EXPECT_LT(worst_std_m, 0.02);
+}
+
 // The same start on tracks with 1 px of noise, twice the image test's 0.5 px: the static start's own test
 // (static_init_pixel_std_px, 1.5 px by default) still finds the rest with its first window; at 0.5 px it
 // does not, and initialization waits for the moving initializer after the take-off (on the semi-real flight
