@@ -54,16 +54,27 @@ Applied Apply(const std::optional<double>& measured, double min_ratio, bool whit
 std::optional<RestSpan> FindFirstRest(const std::vector<CameraFrame>& frames, const CameraModel& camera,
                                       const ZeroVelocityOptions& image_test, double min_rest_s) {
   if (frames.empty()) return std::nullopt;
+  const auto still = [&](const std::map<int, Eigen::Vector2d>& older,
+                         const std::map<int, Eigen::Vector2d>& newer) {
+    const std::optional<StationarityTest> test = ImageStationarity(older, newer, camera.fx, image_test);
+    return test && test->passed();
+  };
   RestSpan run{frames.front().t_ns, frames.front().t_ns};
-  std::map<int, Eigen::Vector2d> previous = NormalizedFeatures(frames.front(), camera);
+  std::map<int, Eigen::Vector2d> first = NormalizedFeatures(frames.front(), camera);
+  std::map<int, Eigen::Vector2d> previous = first;
   for (std::size_t k = 1; k < frames.size(); ++k) {
     std::map<int, Eigen::Vector2d> current = NormalizedFeatures(frames[k], camera);
-    const std::optional<StationarityTest> test = ImageStationarity(previous, current, camera.fx, image_test);
-    const bool still = test && test->passed();
-    if (still) run.t1_ns = frames[k].t_ns;
-    if (!still || k + 1 == frames.size()) {
+    // Still since the previous frame, and since the rest began: a slow motion passes the first test at
+    // every interval, but its displacement grows until the second one fails.
+    const bool interval_still = still(previous, current);
+    const bool rest_goes_on = interval_still && still(first, current);
+    if (rest_goes_on) run.t1_ns = frames[k].t_ns;
+    if (!rest_goes_on || k + 1 == frames.size()) {
       if (NsToS(run.t1_ns - run.t0_ns) >= min_rest_s) return run;
-      run = {frames[k].t_ns, frames[k].t_ns};
+      // A new run from the previous frame when this interval is still, else from this frame.
+      run = interval_still ? RestSpan{frames[k - 1].t_ns, frames[k].t_ns}
+                           : RestSpan{frames[k].t_ns, frames[k].t_ns};
+      first = interval_still ? previous : current;
     }
     previous = std::move(current);
   }
@@ -115,7 +126,8 @@ RestNoise MeasureRestNoise(const ImuStream& imu, const std::vector<CameraFrame>&
                            const RestNoiseOptions& options, ImuNoiseDensities* model) {
   RestNoise out;
   if (options.sensors == RestNoiseSensors::kNone && options.bias_walk == RestNoiseSensors::kNone) return out;
-  ZeroVelocityOptions image_test = zero_velocity;
+  // The static start's test: the rest measured is the stand the static start stands on.
+  ZeroVelocityOptions image_test = StaticStartTests(zero_velocity);
   image_test.probability = options.probability;
   const std::optional<RestSpan> rest = FindFirstRest(frames, camera, image_test, options.min_rest_s);
   if (!rest) return out;

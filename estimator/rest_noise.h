@@ -6,9 +6,13 @@
 // the vibration of rotors, motors or tracks. On EuRoC V1_01 the samples of the 5 s stationary start scatter
 // 5-10 times as much as the datasheet's densities say, at every averaging time from 5 ms to 0.25 s, and an
 // estimator that trusts the datasheet weighs its IMU factors far too much. The rule:
-//   rest      the first run of consecutive camera intervals, at least min_rest_s long, that the image test
-//             of zero-velocity detection (zero_velocity_detector.h) finds stationary, at the quantile
-//             `probability` (a single noisy interval must not end the rest);
+//   rest      the first run of consecutive camera frames, at least min_rest_s long, that the image test
+//             of the static start (zero_velocity_detector.h, at static_init_pixel_std_px) finds stationary,
+//             at the quantile `probability` (a single noisy interval must not end the rest): each frame
+//             against the one before it and against the rest's first frame, so that a slow motion, within
+//             the noise at every interval, is no rest. It is the stand the static start stands on: at
+//             zero_velocity.pixel_std_px (0.5 px) tracks of 1 px noise showed no rest, and the model kept
+//             the datasheet's noise;
 //   measure   over that rest, the Allan deviation at tau = the camera period: the IMU samples are averaged
 //             in consecutive non-overlapping clusters of tau, and the differences d of consecutive cluster
 //             means of all three axes are pooled. White noise of density N gives var(d) = 2 N^2 / tau.
@@ -81,8 +85,8 @@ struct RestNoiseOptions {
             "this many times the model's",
             Bounds::AtLeast(1.0));
     v.Field("probability", probability,
-            "at_rest: chi-square quantile of the image test that finds the rest (zero_velocity.pixel_std_px "
-            "and min_features set the test)",
+            "at_rest: chi-square quantile of the image test that finds the rest (the static start's test: "
+            "zero_velocity.static_init_pixel_std_px and min_features set it)",
             Bounds::Closed(0.5, 0.999999));
   }
 };
@@ -92,9 +96,10 @@ struct RestSpan {
   int64_t t0_ns = 0;
   int64_t t1_ns = 0;
 };
-// The first maximal run of image-stationary consecutive intervals that lasts at least min_rest_s; empty when
-// there is none. `image_test` sets the test (its probability included); an interval whose frames share
-// fewer than image_test.min_features features is not stationary.
+// The first maximal run of consecutive frames that lasts at least min_rest_s, each frame image-stationary
+// against the one before it and against the run's first frame; empty when there is none. `image_test` sets
+// the test (its pixel_std_px and probability included); two frames that share fewer than
+// image_test.min_features features are not stationary.
 std::optional<RestSpan> FindFirstRest(const std::vector<CameraFrame>& frames, const CameraModel& camera,
                                       const ZeroVelocityOptions& image_test, double min_rest_s);
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/random.h"
+#include "estimator/zero_velocity_detector.h"
 
 namespace vigil::estimator {
 namespace {
@@ -46,10 +47,11 @@ ImuStream StillImu(uint64_t seed, double duration_s, double gyro_density, double
   return imu;
 }
 
-// Camera frames at 20 Hz over [0, duration_s] seeing 30 features with 0.5 px noise. The image shifts by
-// 5 px at each time in `jumps_s`, and moves 3 px per frame from `moving_from_s` on.
+// Camera frames at 20 Hz over [0, duration_s] seeing 30 features with `noise_px` of noise. The image shifts
+// by 5 px at each time in `jumps_s`, drifts `drift_px` per frame from the start, and moves 3 px per frame
+// from `moving_from_s` on.
 std::vector<CameraFrame> Frames(uint64_t seed, double duration_s, const std::vector<double>& jumps_s,
-                                double moving_from_s) {
+                                double moving_from_s, double noise_px = 0.5, double drift_px = 0.0) {
   Rng rng(seed, "rest_noise_test");
   std::vector<Eigen::Vector2d> features;
   for (int id = 0; id < 30; ++id) features.emplace_back(100.0 + 10.0 * id, 80.0 + 7.0 * id);
@@ -60,11 +62,12 @@ std::vector<CameraFrame> Frames(uint64_t seed, double duration_s, const std::vec
     for (const double jump_s : jumps_s)
       if (std::abs(t_s - jump_s) < 0.5 / kCameraRateHz) shift_px += 5.0;
     if (t_s >= moving_from_s) shift_px += 3.0;
+    shift_px += drift_px;
     CameraFrame frame;
     frame.t_ns = SecondsToNs(t_s);
     for (int id = 0; id < 30; ++id)
       frame.features.push_back({id, features[id] + Eigen::Vector2d(shift_px, 0.0) +
-                                        0.5 * Eigen::Vector2d(rng.Normal(), rng.Normal())});
+                                        noise_px * Eigen::Vector2d(rng.Normal(), rng.Normal())});
     frames.push_back(frame);
   }
   return frames;
@@ -125,6 +128,57 @@ TEST(RestNoise, TheFirstRestLongEnoughIsFound) {
   EXPECT_FALSE(FindFirstRest(Frames(12, 8.0, {}, 0.0), camera, image_test, 0.1));
 }
 
+// A slow motion passes the image test at every interval, but not over the whole span: at 1.5 px, a drift of
+// 0.5 px per frame is within the noise of each interval, and 10 px after a second. A rest must hold since its
+// first frame too.
+TEST(RestNoise, ASlowDriftIsNoRest) {
+  CameraModel camera;
+  ZeroVelocityOptions image_test;
+  image_test.pixel_std_px = 1.5;
+  image_test.probability = RestNoiseOptions{}.probability;
+  const std::vector<CameraFrame> drifting = Frames(16, 8.0, {}, 5.0, 0.5, 0.5);
+  EXPECT_FALSE(FindFirstRest(drifting, camera, image_test, 2.0));
+  // Each interval alone is still.
+  for (std::size_t k = 1; k < drifting.size(); k += 20) {
+    const auto test = ImageStationarity(NormalizedFeatures(drifting[k - 1], camera),
+                                        NormalizedFeatures(drifting[k], camera), camera.fx, image_test);
+    ASSERT_TRUE(test);
+    EXPECT_TRUE(test->passed()) << "interval " << k;
+  }
+  // Without the drift the same frames stand still until the motion.
+  const auto rest = FindFirstRest(Frames(16, 8.0, {}, 5.0), camera, image_test, 2.0);
+  ASSERT_TRUE(rest);
+  EXPECT_NEAR(Seconds(rest->t0_ns), 0.0, 1e-6);
+}
+
+// The rest is measured with the static start's image test (static_init_pixel_std_px, 1.5 px by default):
+// on tracks of 1 px noise the zero-velocity test of 0.5 px finds no rest, and the model kept the datasheet's
+// noise, while the static start found the stand and stood on it.
+TEST(RestNoise, TheRestIsFoundAtTheStaticStartsTrackNoise) {
+  CameraModel camera;
+  const std::vector<CameraFrame> frames = Frames(17, 8.0, {}, 5.0, 1.0);
+  const ImuStream noisy = StillImu(18, 8.0, 5 * kGyroDensity, 5 * kAccelDensity);
+  ZeroVelocityOptions zero_velocity;
+  ASSERT_EQ(zero_velocity.pixel_std_px, 0.5);
+  ASSERT_EQ(zero_velocity.static_init_pixel_std_px, 1.5);
+  ImuNoiseDensities model = DatasheetModel();
+  const RestNoise found = MeasureRestNoise(noisy, frames, camera, zero_velocity, RestNoiseOptions{}, &model);
+  EXPECT_GT(found.rest_s, 4.5);
+  EXPECT_TRUE(found.accel_applied);
+  ZeroVelocityOptions at_half_a_pixel = zero_velocity;
+  at_half_a_pixel.static_init_pixel_std_px = 0.5;
+  ImuNoiseDensities kept = DatasheetModel();
+  EXPECT_EQ(MeasureRestNoise(noisy, frames, camera, at_half_a_pixel, RestNoiseOptions{}, &kept).rest_s, 0.0);
+  EXPECT_EQ(kept.accel_noise_density, kAccelDensity);
+}
+
+// The static start's image test at the frames' track noise.
+ZeroVelocityOptions TestAtHalfAPixel() {
+  ZeroVelocityOptions options;
+  options.static_init_pixel_std_px = 0.5;
+  return options;
+}
+
 TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   CameraModel camera;
   const std::vector<CameraFrame> frames = Frames(13, 8.0, {}, 5.0);
@@ -135,7 +189,7 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   // A sensor that fits its model keeps the model exactly.
   ImuNoiseDensities fits = model;
   const RestNoise fit = MeasureRestNoise(StillImu(14, 8.0, kGyroDensity, kAccelDensity), frames, camera,
-                                         ZeroVelocityOptions{}, options, &fits);
+                                         TestAtHalfAPixel(), options, &fits);
   EXPECT_NEAR(fit.rest_s, 4.95, 1e-6);
   EXPECT_NEAR(fit.tau_s, 0.05, 1e-9);
   ASSERT_TRUE(fit.gyro_noise_density && fit.accel_noise_density);
@@ -146,7 +200,7 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   // Five times the model's white noise on both sensors: each is raised to what was measured ...
   const ImuStream noisy = StillImu(15, 8.0, 5 * kGyroDensity, 5 * kAccelDensity);
   ImuNoiseDensities raised = model;
-  const RestNoise both = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &raised);
+  const RestNoise both = MeasureRestNoise(noisy, frames, camera, TestAtHalfAPixel(), options, &raised);
   EXPECT_TRUE(both.gyro_applied && both.accel_applied);
   EXPECT_EQ(raised.gyro_noise_density, *both.gyro_noise_density);
   EXPECT_NEAR(raised.accel_noise_density / kAccelDensity, 5.0, 0.5);
@@ -155,8 +209,7 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   // ... unless the options leave a sensor out ...
   options.sensors = RestNoiseSensors::kAccelerometer;
   ImuNoiseDensities accel_only = model;
-  const RestNoise accel =
-      MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &accel_only);
+  const RestNoise accel = MeasureRestNoise(noisy, frames, camera, TestAtHalfAPixel(), options, &accel_only);
   EXPECT_TRUE(accel.accel_applied);
   EXPECT_FALSE(accel.gyro_applied);
   EXPECT_EQ(accel_only.gyro_noise_density, kGyroDensity);
@@ -164,7 +217,7 @@ TEST(RestNoise, OnlyAModelPlainlyTooLowIsRaised) {
   // ... or the rule is off.
   options.sensors = RestNoiseSensors::kNone;
   ImuNoiseDensities off = model;
-  const RestNoise none = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &off);
+  const RestNoise none = MeasureRestNoise(noisy, frames, camera, TestAtHalfAPixel(), options, &off);
   EXPECT_EQ(none.rest_s, 0.0);
   EXPECT_EQ(off.accel_noise_density, kAccelDensity);
 }
@@ -181,7 +234,7 @@ TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
   // The gyroscope's bias walk grows by the measured ratio (about 5); its white noise and the accelerometer
   // keep the model.
   ImuNoiseDensities walk = model;
-  const RestNoise gyro = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &walk);
+  const RestNoise gyro = MeasureRestNoise(noisy, frames, camera, TestAtHalfAPixel(), options, &walk);
   ASSERT_TRUE(gyro.gyro_noise_density);
   EXPECT_TRUE(gyro.gyro_bias_walk_applied);
   EXPECT_FALSE(gyro.gyro_applied || gyro.accel_applied || gyro.accel_bias_walk_applied);
@@ -195,7 +248,7 @@ TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
   // With white noise and bias walk both chosen for both sensors, each sensor gets both.
   options.sensors = options.bias_walk = RestNoiseSensors::kBoth;
   ImuNoiseDensities all = model;
-  const RestNoise both = MeasureRestNoise(noisy, frames, camera, ZeroVelocityOptions{}, options, &all);
+  const RestNoise both = MeasureRestNoise(noisy, frames, camera, TestAtHalfAPixel(), options, &all);
   ASSERT_TRUE(both.accel_noise_density);
   EXPECT_TRUE(both.gyro_applied && both.accel_applied && both.gyro_bias_walk_applied &&
               both.accel_bias_walk_applied);
@@ -207,7 +260,7 @@ TEST(RestNoise, BiasWalkIsScaledByTheMeasuredRatio) {
   // A sensor that fits its model keeps its bias walk.
   ImuNoiseDensities fits = model;
   const RestNoise fit = MeasureRestNoise(StillImu(14, 8.0, kGyroDensity, kAccelDensity), frames, camera,
-                                         ZeroVelocityOptions{}, options, &fits);
+                                         TestAtHalfAPixel(), options, &fits);
   EXPECT_FALSE(fit.gyro_bias_walk_applied || fit.accel_bias_walk_applied);
   EXPECT_EQ(fits.gyro_bias_random_walk, model.gyro_bias_random_walk);
 }
