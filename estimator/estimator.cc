@@ -133,6 +133,8 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
       frame->stationary = IntervalIsStationary(
           window_.back()->features_n, features_n, *frame->imu_from_prev, camera_.fx,
           InStaticStart() ? StaticStartTests(options_.zero_velocity) : options_.zero_velocity);
+      if (frame->stationary && initialized_ && !InStaticStart())
+        frame->stationary = SlowEnoughToStand(*window_.back(), *frame);
     }
   }
   holding_still_ = holding_still_ && frame->stationary;
@@ -245,10 +247,19 @@ bool Estimator::TryInitialize() {
     bias_prior_ = std::make_unique<BiasPriorFactor>(result.states.front().b_a, result.states.front().b_g,
                                                     prior.accel_bias_std, prior.gyro_bias_std);
   }
+  // The update's intervals flagged before the window had velocities (a static start's are still).
+  if (!result.stationary)
+    for (std::size_t i = 1; i < window_.size(); ++i)
+      window_[i]->stationary = window_[i]->stationary && SlowEnoughToStand(*window_[i - 1], *window_[i]);
   initialized_ = true;
   holding_still_ = result.stationary;
   if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;
   return true;
+}
+
+bool Estimator::SlowEnoughToStand(const Frame& older, const Frame& newer) const {
+  const double max_speed_mps = options_.zero_velocity.max_speed_mps;
+  return older.State().v_W.norm() <= max_speed_mps && newer.State().v_W.norm() <= max_speed_mps;
 }
 
 Estimator::Failure Estimator::DetectFailure(const NavState& previous) const {

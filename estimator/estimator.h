@@ -142,6 +142,9 @@ class Estimator {
   // Whether a new frame's interval must be tested for standing still: for the update, and for a static start
   // (the window before initialization, and while it is held still). The flags are read nowhere else.
   bool NeedsStationarity() const { return options_.zero_velocity.update || InStaticStart(); }
+  // Whether the estimate lets the interval from `older` to `newer` stand still for the update: both frames
+  // at most zero_velocity.max_speed_mps.
+  bool SlowEnoughToStand(const Frame& older, const Frame& newer) const;
   // The static start's time: before initialization, and while it holds the window still.
   bool InStaticStart() const {
     return options_.zero_velocity.static_init && (!initialized_ || holding_still_);

@@ -32,9 +32,15 @@ struct ZeroVelocityOptions {
   double static_init_pixel_std_px = 1.5;
   int min_features = 10;              // image test: fewest features seen in both frames
   double imu_noise_multiplier = 0.0;  // imu test: white-noise std scale (0: imu test off)
-  double velocity_std_mps = 0.01;     // the update: std of each velocity about zero [m/s]
-  double position_std_m = 1e-3;       // the update: std of the position change between the two frames [m]
-  double rotation_std_rad = 1e-3;     // the update: std of the rotation between the two frames [rad]
+  // The update: an interval stands still only while the estimate has both its frames slower than this
+  // (the newest as the IMU predicts it, the frames of a new window as the initializer gives them). The image
+  // test alone cannot tell rest from a slow motion, nor from a camera that looks along its motion at far
+  // features: the rescue course's backward camera passed it at 0.7 m/s, and two zero-velocity factors
+  // there sent the run 5 m off. Ten times velocity_std_mps.
+  double max_speed_mps = 0.1;
+  double velocity_std_mps = 0.01;  // the update: std of each velocity about zero [m/s]
+  double position_std_m = 1e-3;    // the update: std of the position change between the two frames [m]
+  double rotation_std_rad = 1e-3;  // the update: std of the rotation between the two frames [rad]
 
   template <class V>
   void Visit(V& v) {
@@ -62,6 +68,10 @@ struct ZeroVelocityOptions {
             "imu test: stationary when the samples scatter within this multiple of the white noise std of "
             "the noise model (0: imu test off)",
             Bounds::NonNegative());
+    v.Field("max_speed_mps", max_speed_mps,
+            "update: an interval counts as stationary only while the estimated speed of both its frames is "
+            "at most this (the image test cannot tell rest from a slow motion) [m/s]",
+            Bounds::Positive());
     v.Field("velocity_std_mps", velocity_std_mps,
             "zero-velocity factor: std of each frame's velocity about zero [m/s]", Bounds::Positive());
     v.Field("position_std_m", position_std_m,
