@@ -190,20 +190,30 @@ TEST(ZeroVelocityRunTest, StaticStartAfterAShiftDuringTheRest) {
   EXPECT_NEAR(estimator.newest_state().b_g.z(), 0.01, 1e-6);
 }
 
-// The IMU simulated along EuRoC V1_01 (the committed excerpt), which stands still for its first 5.3 s: with a
-// static start the estimator initializes with its first window (16 frames solved at 10 Hz), holds the
-// position while still, and goes on after the take-off.
-TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
+// The first 9 s of the IMU simulated along EuRoC V1_01 (the committed excerpt, which stands still until
+// 5.3 s), for the own initializer.
+experiments::RunConfig V101Start() {
   const fs::path root = fs::path(VIGIL_SOURCE_DIR);
   experiments::RunConfig config =
       experiments::LoadRunConfig((root / "configs/recording_v1_01.yaml").string());
   config.sim.duration_s = 9.0;
-  const Dataset data = sim::Simulate(config.sim, 1);
   config.estimator.init = InitMode::kVins;
+  return config;
+}
+
+EstimatorResult RunOn(const experiments::RunConfig& config, const Dataset& data) {
+  return RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+}
+
+// The IMU simulated along EuRoC V1_01 (the committed excerpt), which stands still for its first 5.3 s: with a
+// static start the estimator initializes with its first window (16 frames solved at 10 Hz), holds the
+// position while still, and goes on after the take-off.
+TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
+  experiments::RunConfig config = V101Start();
+  const Dataset data = sim::Simulate(config.sim, 1);
   config.estimator.zero_velocity.static_init = true;
   config.estimator.zero_velocity.update = true;
-  const EstimatorResult result =
-      RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+  const EstimatorResult result = RunOn(config, data);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   ASSERT_FALSE(result.states.empty());
   const NavState& first = result.states.front();
@@ -226,17 +236,12 @@ TEST(ZeroVelocityRunTest, StaticStartHoldsStillOnV101) {
 // information. Without them in the covariance's window every pose of the hold had no covariance, and the
 // NEES was aligned at the first pose after the take-off instead of the first one.
 TEST(ZeroVelocityRunTest, TheHoldHasACovariance) {
-  const fs::path root = fs::path(VIGIL_SOURCE_DIR);
-  experiments::RunConfig config =
-      experiments::LoadRunConfig((root / "configs/recording_v1_01.yaml").string());
-  config.sim.duration_s = 9.0;
+  experiments::RunConfig config = V101Start();
   const Dataset data = sim::Simulate(config.sim, 1);
-  config.estimator.init = InitMode::kVins;
   config.estimator.covariance_rate_hz = 0.0;  // at every solved frame
   ASSERT_TRUE(config.estimator.zero_velocity.static_init);
   ASSERT_TRUE(config.estimator.pose_covariance);
-  const EstimatorResult result =
-      RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+  const EstimatorResult result = RunOn(config, data);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   ASSERT_EQ(result.pose_covariances.size(), result.states.size());
   int still = 0;
@@ -258,18 +263,13 @@ TEST(ZeroVelocityRunTest, TheHoldHasACovariance) {
 // does not, and initialization waits for the moving initializer after the take-off (on the semi-real flight
 // that start ran away on 4 of 10 seeds at 1 px).
 TEST(ZeroVelocityRunTest, StaticStartFindsTheRestOnNoisierTracks) {
-  const fs::path root = fs::path(VIGIL_SOURCE_DIR);
-  experiments::RunConfig config =
-      experiments::LoadRunConfig((root / "configs/recording_v1_01.yaml").string());
-  config.sim.duration_s = 9.0;
+  experiments::RunConfig config = V101Start();
   config.sim.camera.pixel_noise_px = 1.0;
   const Dataset data = sim::Simulate(config.sim, 1);
-  config.estimator.init = InitMode::kVins;
   ASSERT_TRUE(config.estimator.zero_velocity.static_init);
   ASSERT_EQ(config.estimator.zero_velocity.pixel_std_px, 0.5);
   auto first_state_s = [&]() {
-    const EstimatorResult result =
-        RunEstimator(config.estimator, experiments::MakeEstimatorInput(config, data, data.imu));
+    const EstimatorResult result = RunOn(config, data);
     EXPECT_TRUE(result.ok) << result.failure_reason;
     return result.states.empty() ? 1e9 : NsToS(result.states.front().t_ns - data.frames.front().t_ns);
   };
@@ -287,21 +287,20 @@ TEST(ZeroVelocityRunTest, TheUpdateHoldsNoFrameTheEstimateSeesMoving) {
   // The whole 36 s loop: the course's speeds scale with its duration.
   experiments::RunConfig config = experiments::LoadRunConfig((root / "configs/rescue.yaml").string());
   const Dataset data = sim::Simulate(config.sim, 2);
-  const EstimatorInput input = experiments::MakeEstimatorInput(config, data, data.imu);
-  auto ate_m = [&](const EstimatorOptions& options) {
-    const EstimatorResult result = RunEstimator(options, input);
+  auto ate_m = [&]() {
+    const EstimatorResult result = RunOn(config, data);
     EXPECT_TRUE(result.ok) << result.failure_reason;
     return testing::PosYawAteRmse(result.states, data.groundtruth);
   };
-  const double without_update = ate_m(config.estimator);
+  const double without_update = ate_m();
   config.estimator.zero_velocity.update = true;
   ASSERT_EQ(config.estimator.zero_velocity.max_speed_mps, 0.1);
-  const double with_update = ate_m(config.estimator);
+  const double with_update = ate_m();
   std::printf("ATE without the update %.4f m, with it %.4f m\n", without_update, with_update);
   EXPECT_LT(with_update, 0.2);
   EXPECT_NEAR(with_update, without_update, 0.01);
   config.estimator.zero_velocity.max_speed_mps = 1e9;  // the image test alone
-  EXPECT_GT(ate_m(config.estimator), 0.5);
+  EXPECT_GT(ate_m(), 0.5);
 }
 
 }  // namespace
