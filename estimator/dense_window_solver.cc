@@ -76,10 +76,8 @@ struct Linearization {
 bool Linearize(const DenseWindowProblem& p, Linearization* out) {
   WindowInformation info(p.poses, p.speed_biases);
   out->residuals = 0;
-  std::vector<double*> blocks;
   for (const MarginalizationTerm& f : p.factors) {
-    blocks.assign(f.blocks.begin(), f.blocks.end());
-    if (!info.AddFactor(*f.cost, f.loss, blocks)) return false;
+    if (!info.AddTerm(f)) return false;
     out->residuals += f.cost->num_residuals();
   }
   info.SeparateDepthFill();

@@ -129,11 +129,12 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
                                                 imu_rate_hz_, imu_variance_scale);
     if (initialized_) Predict(frame.get());
     if (NeedsStationarity()) {
-      // The static start's tests in its time; the update's after.
+      // The static start's tests in its time; the update's after, for what the estimate sees slow.
+      const bool static_start = InStaticStart();
       frame->stationary = IntervalIsStationary(
           window_.back()->features_n, features_n, *frame->imu_from_prev, camera_.fx,
-          InStaticStart() ? StaticStartTests(options_.zero_velocity) : options_.zero_velocity);
-      if (frame->stationary && initialized_ && !InStaticStart())
+          static_start ? StaticStartTests(options_.zero_velocity) : options_.zero_velocity);
+      if (frame->stationary && initialized_ && !static_start)
         frame->stationary = SlowEnoughToStand(*window_.back(), *frame);
     }
   }
@@ -248,7 +249,7 @@ bool Estimator::TryInitialize() {
                                                     prior.accel_bias_std, prior.gyro_bias_std);
   }
   // The update's intervals flagged before the window had velocities (a static start's are still).
-  if (!result.stationary)
+  if (options_.zero_velocity.update && !result.stationary)
     for (std::size_t i = 1; i < window_.size(); ++i)
       window_[i]->stationary = window_[i]->stationary && SlowEnoughToStand(*window_[i - 1], *window_[i]);
   initialized_ = true;

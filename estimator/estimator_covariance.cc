@@ -36,11 +36,8 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
             {window_[k - 1]->pose, window_[k - 1]->speed_bias, window_[k]->pose, window_[k]->speed_bias}))
       return std::nullopt;
   }
-  std::vector<double*> blocks;
-  for (const MarginalizationTerm& term : still_terms) {
-    blocks.assign(term.blocks.begin(), term.blocks.end());
-    if (!information.AddFactor(*term.cost, term.loss, blocks)) return std::nullopt;
-  }
+  for (const MarginalizationTerm& term : still_terms)
+    if (!information.AddTerm(term)) return std::nullopt;
   // Each track's reprojections, its depth eliminated: what is left is the information of the window's states.
   std::vector<ReprojectionTerm> reprojections;
   std::vector<WindowInformation::Reprojection> track_terms;

@@ -40,7 +40,7 @@ OldestFrameMarginalization::OldestFrameMarginalization(const OldestFrame& oldest
     : oldest_(oldest), eigen_threshold_(eigen_threshold), information_(oldest.poses, oldest.speed_biases) {
   if (oldest.poses.empty() || oldest.poses.size() != oldest.speed_biases.size()) return;
   for (const MarginalizationTerm& term : oldest.factors)
-    if (!information_.AddFactor(*term.cost, term.loss, {term.blocks.begin(), term.blocks.end()})) return;
+    if (!information_.AddTerm(term)) return;
   for (const auto& track : oldest.tracks)
     if (!information_.AddTrack(track.data(), track.data() + track.size(), oldest.reprojection_loss,
                                eigen_threshold))

@@ -60,20 +60,22 @@ std::optional<RestSpan> FindFirstRest(const std::vector<CameraFrame>& frames, co
     return test && test->passed();
   };
   RestSpan run{frames.front().t_ns, frames.front().t_ns};
+  std::size_t first_k = 0;  // the run's first frame
   std::map<int, Eigen::Vector2d> first = NormalizedFeatures(frames.front(), camera);
   std::map<int, Eigen::Vector2d> previous = first;
   for (std::size_t k = 1; k < frames.size(); ++k) {
     std::map<int, Eigen::Vector2d> current = NormalizedFeatures(frames[k], camera);
     // Still since the previous frame, and since the rest began: a slow motion passes the first test at
-    // every interval, but its displacement grows until the second one fails.
+    // every interval, but its displacement grows until the second one fails (the same test while the run
+    // began at the previous frame).
     const bool interval_still = still(previous, current);
-    const bool rest_goes_on = interval_still && still(first, current);
+    const bool rest_goes_on = interval_still && (first_k + 1 == k || still(first, current));
     if (rest_goes_on) run.t1_ns = frames[k].t_ns;
     if (!rest_goes_on || k + 1 == frames.size()) {
       if (NsToS(run.t1_ns - run.t0_ns) >= min_rest_s) return run;
       // A new run from the previous frame when this interval is still, else from this frame.
-      run = interval_still ? RestSpan{frames[k - 1].t_ns, frames[k].t_ns}
-                           : RestSpan{frames[k].t_ns, frames[k].t_ns};
+      first_k = interval_still ? k - 1 : k;
+      run = {frames[first_k].t_ns, frames[k].t_ns};
       first = interval_still ? previous : current;
     }
     previous = std::move(current);

@@ -37,6 +37,10 @@ class WindowInformation {
   // window's, or the numbers are not finite.
   bool AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
                  const std::vector<double*>& blocks);
+  // AddFactor of a marginalization term.
+  bool AddTerm(const MarginalizationTerm& term) {
+    return AddFactor(*term.cost, term.loss, {term.blocks.begin(), term.blocks.end()});
+  }
   // One reprojection of a track: its factor over (anchor pose, observing pose, inverse depth).
   struct Reprojection {
     const ReprojectionFactor* factor;
