@@ -1,14 +1,11 @@
 #include "gl/gl_context.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
-
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
+
+#include "gl/gl_api.h"
 
 namespace vigil::gl {
 

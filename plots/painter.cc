@@ -1,9 +1,9 @@
 #include "plots/painter.h"
 
-#include <GL/gl.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "gl/gl_api.h"
 
 namespace vigil::plots {
 namespace {

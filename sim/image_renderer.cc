@@ -1,9 +1,5 @@
 #include "sim/image_renderer.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,6 +11,7 @@
 #include "core/output.h"
 #include "core/png/png_encode.h"
 #include "core/random.h"
+#include "gl/gl_api.h"
 #include "gl/gl_context.h"
 #include "sim/texture.h"
 
