@@ -29,7 +29,7 @@ WindowInformation::BlockColumn WindowInformation::ColumnOf(const double* block) 
 }
 
 bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
-                                  const std::vector<double*>& blocks) {
+                                  const TermBlocks& blocks) {
   const std::vector<int32_t>& sizes = cost.parameter_block_sizes();
   const int rows = cost.num_residuals();
   std::vector<BlockColumn> columns;
@@ -83,8 +83,7 @@ void AddUpperBlock(const Jacobian& J, int first_a, int first_b, int column_a, in
 }  // namespace
 
 bool WindowInformation::AddTwoFrameFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
-                                          const std::vector<double*>& blocks,
-                                          const std::vector<BlockColumn>& columns) {
+                                          const TermBlocks& blocks, const std::vector<BlockColumn>& columns) {
   constexpr int kPose = kPoseTangentSize, kSpeedBias = kSpeedBiasSize;
   Eigen::Matrix<double, kTwoFrameRows, kPoseSize, Eigen::RowMajor> J_pose_0, J_pose_1;
   Eigen::Matrix<double, kTwoFrameRows, kSpeedBias, Eigen::RowMajor> J_speed_bias_0, J_speed_bias_1;

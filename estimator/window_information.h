@@ -35,12 +35,9 @@ class WindowInformation {
   // Adds a factor over window blocks (each one of the frames' pose or speed-bias blocks), evaluated at their
   // current values with `loss` (may be null) applied. False when the factor fails, a block is not the
   // window's, or the numbers are not finite.
-  bool AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
-                 const std::vector<double*>& blocks);
+  bool AddFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss, const TermBlocks& blocks);
   // AddFactor of a marginalization term.
-  bool AddTerm(const MarginalizationTerm& term) {
-    return AddFactor(*term.cost, term.loss, {term.blocks.begin(), term.blocks.end()});
-  }
+  bool AddTerm(const MarginalizationTerm& term) { return AddFactor(*term.cost, term.loss, term.blocks); }
   // One reprojection of a track: its factor over (anchor pose, observing pose, inverse depth).
   struct Reprojection {
     const ReprojectionFactor* factor;
@@ -105,7 +102,7 @@ class WindowInformation {
   // IMU factor): in fixed sizes, each pair of its blocks once, into the upper block triangle.
   static constexpr int kTwoFrameRows = 15;
   bool AddTwoFrameFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
-                         const std::vector<double*>& blocks, const std::vector<BlockColumn>& columns);
+                         const TermBlocks& blocks, const std::vector<BlockColumn>& columns);
   // Adds H and g, laid out over `columns` in order (each block's tangent rows), to the window's.
   void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
                   const Eigen::VectorXd& g);

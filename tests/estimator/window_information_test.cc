@@ -21,8 +21,7 @@ TEST(WindowInformation, EqualsTheGeneralSchurComplementOfTheDepths) {
   const auto& poses = w.poses;
   const auto& speed_biases = w.speed_biases;
   WindowInformation information(w.pose_blocks, w.speed_bias_blocks);
-  for (const MarginalizationTerm& t : w.terms)
-    ASSERT_TRUE(information.AddFactor(*t.cost, nullptr, {t.blocks.begin(), t.blocks.end()}));
+  for (const MarginalizationTerm& t : w.terms) ASSERT_TRUE(information.AddFactor(*t.cost, nullptr, t.blocks));
   for (const auto& track : w.track_terms)
     ASSERT_TRUE(information.AddTrack(track.data(), track.data() + track.size(), &w.loss, 1e-8));
   ASSERT_TRUE(information.AddPrior(w.prior));
@@ -61,7 +60,7 @@ TEST(WindowInformation, TheSeparateDepthFillIsWhatTheEliminationSubtracts) {
   auto build = [&](bool separate) {
     WindowInformation information(w.pose_blocks, w.speed_bias_blocks);
     for (const MarginalizationTerm& t : w.terms)
-      EXPECT_TRUE(information.AddFactor(*t.cost, nullptr, {t.blocks.begin(), t.blocks.end()}));
+      EXPECT_TRUE(information.AddFactor(*t.cost, nullptr, t.blocks));
     if (separate) information.SeparateDepthFill();
     for (const auto& track : w.track_terms)
       EXPECT_TRUE(information.AddTrack(track.data(), track.data() + track.size(), &w.loss, 1e-8));

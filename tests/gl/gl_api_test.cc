@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -20,10 +21,20 @@ bool OsMesaLoaded() {
   return true;
 }
 
+// In a freshly started process (the threadsafe death-test style starts the test binary again), so that no
+// context another test made, in any order or repetition, has loaded OSMesa already. Exit status 1: loaded
+// before any context (linked); 2: still not loaded after the first one.
 TEST(GlApi, OsMesaIsLoadedWithTheFirstContextOnly) {
-  EXPECT_FALSE(OsMesaLoaded()) << OsMesaLibrary() << " is loaded before any context: it is linked";
-  GlContext context(/*samples=*/0);
-  EXPECT_TRUE(OsMesaLoaded());
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        if (OsMesaLoaded()) std::_Exit(1);
+        const GlContext context(/*samples=*/0);
+        std::_Exit(OsMesaLoaded() ? 0 : 2);
+      },
+      ::testing::ExitedWithCode(0), "")
+      << "1: " << OsMesaLibrary()
+      << " is loaded before any context (it is linked); 2: not after the first one";
 }
 
 TEST(GlApi, TheLoadedFunctionsDraw) {
