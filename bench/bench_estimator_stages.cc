@@ -1,5 +1,6 @@
 // The estimator's stages, each timed on a fixed window (bench/estimator_stages.h): the window solve, the
-// newest pose's covariance and the oldest frame's marginalization.
+// newest pose's covariance and the oldest frame's marginalization, and the two after a keyframe, with the
+// oldest frame's terms linearized once for both (as the estimator does) or twice (`_unshared`).
 //   build/bench/bench_estimator_stages [--benchmark_repetitions=10]
 // Windows: the paper scenario (configs/paper.yaml, seed 1) at 10 s, and the semi-real V1_01 flight
 // (configs/euroc_v1_01_semireal.yaml, seed 1) at 20 s; a window whose recording is absent is skipped with a
@@ -72,6 +73,13 @@ void BM_Covariance(benchmark::State& state, const Window& window) {
   });
 }
 
+void BM_CovarianceAndMarginalize(benchmark::State& state, const Window& window, bool shared) {
+  OnWindow(state, window, [&](EstimatorStages& stages) {
+    for (auto _ : state)
+      if (!stages.CovarianceAndMarginalize(shared)) state.SkipWithError("no covariance or prior");
+  });
+}
+
 void BM_Marginalize(benchmark::State& state, const Window& window, bool general) {
   OnWindow(state, window, [&](EstimatorStages& stages) {
     for (auto _ : state)
@@ -84,11 +92,16 @@ BENCHMARK_CAPTURE(BM_Solve, paper_ceres, kPaper, SolverBackend::kCeres)->Unit(be
 BENCHMARK_CAPTURE(BM_Covariance, paper, kPaper)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, paper, kPaper, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, paper_general, kPaper, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, paper, kPaper, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, paper_unshared, kPaper, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, semireal_dense, kSemiReal, SolverBackend::kDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, semireal_ceres, kSemiReal, SolverBackend::kCeres)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, semireal, kSemiReal)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, semireal, kSemiReal, false)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Marginalize, semireal_general, kSemiReal, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal, kSemiReal, true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_unshared, kSemiReal, false)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vigil::estimator

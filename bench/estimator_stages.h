@@ -41,6 +41,18 @@ class EstimatorStages {
                                             : e_.Optimize(/*marginalize_oldest_next=*/true, &reason);
   }
   std::optional<Matrix6d> Covariance() { return e_.NewestPoseCovariance(); }
+  // After a keyframe, before the oldest frame leaves: the newest pose's covariance and the prior that
+  // marginalizing the oldest frame keeps, the oldest frame's terms linearized once for both (`shared`, as
+  // the estimator does: Estimator::LinearizedOldest) or again for the covariance. The covariance; empty
+  // when it or the marginalization fails.
+  std::optional<Matrix6d> CovarianceAndMarginalize(bool shared) {
+    const Estimator::LinearizedOldest oldest(e_);
+    std::optional<Matrix6d> covariance =
+        e_.NewestPoseCovariance(shared ? oldest.marginalization.information() : nullptr);
+    LinearPrior prior;
+    if (!oldest.marginalization.Prior(e_.prior_.get(), PriorForm::kSquareRoot, &prior)) return std::nullopt;
+    return covariance;
+  }
   // The prior that marginalizing the oldest frame would keep, as the estimator builds it (in the window's
   // layout) or by the general elimination; false when it fails.
   bool MarginalizeOldest(bool general) {

@@ -192,18 +192,27 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     failure_reason_ = "at t = " + FormatFixed(NsToS(t_ns), 3) + " s: " + reason;
     return FrameStatus::kFailed;
   }
+  // After a keyframe the oldest frame leaves: its terms, linearized once at the solved estimate, serve its
+  // marginalization and the covariance.
+  std::optional<LinearizedOldest> oldest;
+  const auto marg_start = std::chrono::steady_clock::now();
+  if (full && keyframe) oldest.emplace(*this);
+  timing_.marginalize_s += SecondsSince(marg_start);
   newest_pose_covariance_.reset();
   if (options_.pose_covariance &&
       (!last_covariance_ns_ || RateAllows(*last_covariance_ns_, t_ns, options_.covariance_rate_hz))) {
     last_covariance_ns_ = t_ns;
     const auto covariance_start = std::chrono::steady_clock::now();
-    newest_pose_covariance_ = NewestPoseCovariance();
+    newest_pose_covariance_ = NewestPoseCovariance(oldest ? oldest->marginalization.information() : nullptr);
     timing_.covariance_s += SecondsSince(covariance_start);
   }
   if (full) {
-    const auto marg_start = std::chrono::steady_clock::now();
-    Slide(keyframe, /*with_prior=*/true);
-    timing_.marginalize_s += SecondsSince(marg_start);
+    const auto slide_start = std::chrono::steady_clock::now();
+    if (oldest)
+      MarginalizeOldest(&*oldest);
+    else
+      MarginalizeSecondNewest(/*with_prior=*/true);
+    timing_.marginalize_s += SecondsSince(slide_start);
     ++timing_.marginalizations;
   }
   if (keyframe && full) ++keyframes_;
@@ -302,10 +311,10 @@ void Estimator::Reset() {
 }
 
 void Estimator::Slide(bool marginalize_oldest, bool with_prior) {
-  if (marginalize_oldest)
-    MarginalizeOldest(with_prior);
-  else
-    MarginalizeSecondNewest(with_prior);
+  if (!marginalize_oldest) return MarginalizeSecondNewest(with_prior);
+  std::optional<LinearizedOldest> linearized;
+  if (with_prior && window_.size() >= 2) linearized.emplace(*this);
+  MarginalizeOldest(linearized ? &*linearized : nullptr);
 }
 
 }  // namespace vigil::estimator

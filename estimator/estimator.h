@@ -174,7 +174,15 @@ class Estimator {
     std::vector<int> tracks;
   };
   OldestFrameTerms TermsOfOldest();
-  void MarginalizeOldest(bool with_prior);
+  // The oldest frame's terms, linearized once at the current estimate: for its marginalization, and for the
+  // pose covariance when one is due at the same estimate (its share of the window's information).
+  struct LinearizedOldest {
+    explicit LinearizedOldest(Estimator& estimator);
+    OldestFrameTerms terms;
+    OldestFrameMarginalization marginalization;  // over terms.frame
+  };
+  // Drops the oldest frame; with `linearized` (else without a prior), its terms go into the priors.
+  void MarginalizeOldest(const LinearizedOldest* linearized);
   void MarginalizeSecondNewest(bool with_prior);
   // A marginalization of the window: the prior it leaves from `previous` (may be null), in `form`; false
   // when it fails.
@@ -185,8 +193,10 @@ class Estimator {
   // is null.
   void KeepAnchoredPrior(const PriorUpdate& update);
   void Reset();
-  // The newest pose's covariance from the window's information (estimator_covariance.cc).
-  std::optional<Matrix6d> NewestPoseCovariance();
+  // The newest pose's covariance from the window's information (estimator_covariance.cc). `oldest` (may be
+  // null): the information of the terms over the oldest frame, already linearized at the current estimate
+  // (LinearizedOldest), which the covariance then adds instead of linearizing them again.
+  std::optional<Matrix6d> NewestPoseCovariance(const WindowInformation* oldest = nullptr);
   // One reprojection factor per observation of track `id` after its anchor, with its parameter blocks
   // (anchor pose, observing pose, `inv_depth`: the track's inverse depth or the solve's copy of it), from
   // reprojection_factors_.

@@ -3,6 +3,7 @@
 // place of the solve's), the feature depths eliminated track by track (window_information.h), the gauge held
 // at the run's first frame (pose_covariance.h), its marginal from the factorization of
 // window_factorization.h.
+#include <algorithm>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -14,8 +15,15 @@
 
 namespace vigil::estimator {
 
-std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
+std::optional<Matrix6d> Estimator::NewestPoseCovariance(const WindowInformation* oldest) {
   if (window_.size() < 2) return std::nullopt;
+  // With `oldest`, the terms over the oldest frame's blocks are its, and are not linearized again.
+  const Frame& oldest_frame = *window_.front();
+  const auto over_oldest = [&](const TermBlocks& blocks) {
+    return oldest != nullptr && std::any_of(blocks.begin(), blocks.end(), [&](const double* block) {
+             return block == oldest_frame.pose || block == oldest_frame.speed_bias;
+           });
+  };
   std::vector<double*> poses, speed_biases;
   for (const auto& f : window_) {
     poses.push_back(f->pose);
@@ -27,9 +35,11 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
   std::vector<MarginalizationTerm> still_terms;
   AppendZeroVelocityTerms(speed_biases, &costs, &still_terms);
   WindowInformation information(std::move(poses), std::move(speed_biases));
-  if (bias_prior_ && !information.AddFactor(*bias_prior_, nullptr, {window_.front()->speed_bias}))
+  if (oldest != nullptr && !information.Add(*oldest)) return std::nullopt;
+  if (bias_prior_ && oldest == nullptr &&
+      !information.AddFactor(*bias_prior_, nullptr, {window_.front()->speed_bias}))
     return std::nullopt;
-  for (std::size_t k = 1; k < window_.size(); ++k) {
+  for (std::size_t k = oldest != nullptr ? 2 : 1; k < window_.size(); ++k) {
     const ImuFactor factor(*window_[k]->imu_from_prev, g_W_);
     if (!information.AddFactor(
             factor, nullptr,
@@ -37,12 +47,12 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance() {
       return std::nullopt;
   }
   for (const MarginalizationTerm& term : still_terms)
-    if (!information.AddTerm(term)) return std::nullopt;
+    if (!over_oldest(term.blocks) && !information.AddTerm(term)) return std::nullopt;
   // Each track's reprojections, its depth eliminated: what is left is the information of the window's states.
   std::vector<ReprojectionTerm> reprojections;
   std::vector<WindowInformation::Reprojection> track_terms;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track)) continue;
+    if (!features_.Usable(track) || (oldest != nullptr && track.anchor_frame() == oldest_frame.id)) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     track_terms.clear();

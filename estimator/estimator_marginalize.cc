@@ -72,20 +72,20 @@ Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
   return out;
 }
 
-void Estimator::MarginalizeOldest(bool with_prior) {
+Estimator::LinearizedOldest::LinearizedOldest(Estimator& estimator)
+    : terms(estimator.TermsOfOldest()),
+      marginalization(terms.frame, estimator.options_.window.marginalization_eigen_threshold) {}
+
+void Estimator::MarginalizeOldest(const LinearizedOldest* linearized) {
   Frame& oldest = *window_.front();
   std::vector<int> restarted;  // tracks whose observations all went into the prior
-  if (with_prior && window_.size() >= 2) {
-    const OldestFrameTerms oldest_terms = TermsOfOldest();
-    // Its terms linearized once, for both priors.
-    const OldestFrameMarginalization marginalization(oldest_terms.frame,
-                                                     options_.window.marginalization_eigen_threshold);
+  if (linearized) {
     const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
-      return marginalization.Prior(previous, form, prior);
+      return linearized->marginalization.Prior(previous, form, prior);
     };
     KeepPrior(update);
     if (options_.pose_covariance) KeepAnchoredPrior(update);
-    if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted = oldest_terms.tracks;
+    if (options_.window.oldest_tracks == OldestTracks::kRestart) restarted = linearized->terms.tracks;
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   for (const int id : restarted) features_.EraseTrack(id);

@@ -41,6 +41,9 @@ class OldestFrameMarginalization {
   // terms leaves, in `form`. False when a factor failed, a block is not the window's, nothing is left to
   // keep, or the numbers are not finite.
   bool Prior(const LinearPrior* previous, PriorForm form, LinearPrior* prior) const;
+  // The oldest frame's terms' information in the window's layout (the depths of its tracks eliminated);
+  // null when a term failed.
+  const WindowInformation* information() const { return linearized_ ? &information_ : nullptr; }
 
  private:
   const OldestFrame& oldest_;

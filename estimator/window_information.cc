@@ -230,6 +230,15 @@ void WindowInformation::AddPoseBlocks(const Eigen::MatrixXd& pose_matrix, double
           scale * pose_matrix.block<kPose, kPose>(FillColumn(i), FillColumn(j));
 }
 
+bool WindowInformation::Add(const WindowInformation& other) {
+  if (other.pose_blocks_ != pose_blocks_ || other.speed_bias_blocks_ != speed_bias_blocks_ || separate_fill_ ||
+      other.separate_fill_)
+    return false;
+  mutable_H() += other.H();
+  g_ += other.g_;
+  return true;
+}
+
 bool WindowInformation::AddPrior(const LinearPrior& prior) {
   std::vector<BlockColumn> columns;
   for (const LinearPrior::Block& b : prior.blocks) {

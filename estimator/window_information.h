@@ -62,6 +62,9 @@ class WindowInformation {
   // Adds a linear prior at its blocks' current values (PriorInformationAtCurrentValues). False when one of
   // its blocks is not the window's.
   bool AddPrior(const LinearPrior& prior);
+  // Adds another information over the same blocks (their depth fills folded in as each one's H() holds
+  // them). False when the blocks differ.
+  bool Add(const WindowInformation& other);
   // From now on, AddTrack adds the depths' elimination (sum over tracks of w w^T / h_dd and w b_d / h_dd)
   // to depth_fill_H() and depth_fill_g() instead of subtracting it from H() and g(): H() - depth_fill_H()
   // is then the information with the depths eliminated. A solve that damps the depths rescales the fill.

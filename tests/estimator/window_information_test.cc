@@ -76,6 +76,35 @@ TEST(WindowInformation, TheSeparateDepthFillIsWhatTheEliminationSubtracts) {
   EXPECT_LT((separate.g() - separate.depth_fill_g() - eliminated.g()).norm(), 1e-12 * eliminated.g().norm());
 }
 
+// The information of some terms plus that of the others is the information of all of them: the covariance
+// adds the oldest frame's share, linearized for its marginalization, to the rest's.
+TEST(WindowInformation, ThePartsAddUpToTheWhole) {
+  testing::SyntheticWindow w(3);
+  WindowInformation whole(w.pose_blocks, w.speed_bias_blocks), first(w.pose_blocks, w.speed_bias_blocks),
+      second(w.pose_blocks, w.speed_bias_blocks);
+  for (std::size_t i = 0; i < w.terms.size(); ++i) {
+    ASSERT_TRUE(whole.AddFactor(*w.terms[i].cost, nullptr, w.terms[i].blocks));
+    ASSERT_TRUE((i % 2 == 0 ? first : second).AddFactor(*w.terms[i].cost, nullptr, w.terms[i].blocks));
+  }
+  for (std::size_t i = 0; i < w.track_terms.size(); ++i) {
+    const auto& track = w.track_terms[i];
+    ASSERT_TRUE(whole.AddTrack(track.data(), track.data() + track.size(), &w.loss, 1e-8));
+    ASSERT_TRUE(
+        (i % 2 == 0 ? second : first).AddTrack(track.data(), track.data() + track.size(), &w.loss, 1e-8));
+  }
+  ASSERT_TRUE(first.Add(second));
+  EXPECT_GT((second.H() - whole.H()).norm(), 1e-3 * whole.H().norm());  // each part is only a part
+  EXPECT_LT((first.H() - whole.H()).norm(), 1e-12 * whole.H().norm());
+  EXPECT_LT((first.g() - whole.g()).norm(), 1e-12 * whole.g().norm());
+  // Another window's, or one whose depth fill is kept apart, is refused.
+  std::vector<double> pose = testing::Pose(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
+  std::vector<double> speed_bias(kSpeedBiasSize, 0.0);
+  EXPECT_FALSE(first.Add(WindowInformation({pose.data()}, {speed_bias.data()})));
+  WindowInformation separate(w.pose_blocks, w.speed_bias_blocks);
+  separate.SeparateDepthFill();
+  EXPECT_FALSE(first.Add(separate));
+}
+
 TEST(WindowInformation, RefusesABlockOutsideTheWindow) {
   std::vector<double> pose = testing::Pose(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
   std::vector<double> speed_bias(kSpeedBiasSize, 0.0), other_pose = pose;
