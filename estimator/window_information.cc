@@ -231,8 +231,8 @@ void WindowInformation::AddPoseBlocks(const Eigen::MatrixXd& pose_matrix, double
 }
 
 bool WindowInformation::Add(const WindowInformation& other) {
-  if (other.pose_blocks_ != pose_blocks_ || other.speed_bias_blocks_ != speed_bias_blocks_ || separate_fill_ ||
-      other.separate_fill_)
+  if (other.pose_blocks_ != pose_blocks_ || other.speed_bias_blocks_ != speed_bias_blocks_ ||
+      separate_fill_ || other.separate_fill_)
     return false;
   mutable_H() += other.H();
   g_ += other.g_;
