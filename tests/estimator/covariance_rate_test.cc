@@ -20,10 +20,7 @@ EstimatorResult RunWithCovarianceRate(const EstimatorInput& input, double covari
 // a covariance, bit for bit the one computed at every frame, and the others none; the trajectory is the
 // same bytes.
 TEST(CovarianceRate, EveryThirdPoseOfA30HzCameraGetsTheSameCovariance) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 6.0;
-  const Dataset data = sim::Simulate(sim_options, 5);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 5);
+  const auto [data, input] = testing::SimulatePaperRun(6.0, 5);
   const EstimatorResult every = RunWithCovarianceRate(input, 0.0);
   const EstimatorResult rated = RunWithCovarianceRate(input, 10.0);
   ASSERT_TRUE(every.ok) << every.failure_reason;
@@ -51,11 +48,7 @@ TEST(CovarianceRate, EveryThirdPoseOfA30HzCameraGetsTheSameCovariance) {
 // At the defaults the frame-rate cap and the covariance's rate are both 10 Hz: every pose of the trajectory
 // (a solved frame) has its covariance.
 TEST(CovarianceRate, AtTheDefaultsEverySolvedPoseHasACovariance) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 6.0;
-  const Dataset data = sim::Simulate(sim_options, 5);
-  const EstimatorResult result =
-      RunEstimator(EstimatorOptions{}, testing::InputFromSimulation(sim_options, data, 5));
+  const EstimatorResult result = RunEstimator(EstimatorOptions{}, testing::SimulatePaperRun(6.0, 5).input);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   ASSERT_GT(result.trajectory.size(), 20u);
   ASSERT_EQ(result.pose_covariances.size(), result.trajectory.size());

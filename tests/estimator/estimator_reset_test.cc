@@ -21,10 +21,7 @@ class ReinitializingGroundTruth : public GroundTruthInitializer {
 };
 
 TEST(EstimatorResetTest, FailureResetsAndReinitializes) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 3.0;
-  const Dataset data = sim::Simulate(sim_options, 5);
-  EstimatorInput input = testing::InputFromSimulation(sim_options, data, 5);
+  auto [data, input] = testing::SimulatePaperRun(3.0, 5);
   for (ImuSample& s : input.imu)
     if (s.t_ns > 1'000'000'000 && s.t_ns < 1'200'000'000) s.a_B.z() += 1000.0;
   Estimator estimator(

@@ -12,13 +12,6 @@ namespace {
 
 constexpr int64_t kOneSecondNs = 1'000'000'000;
 
-EstimatorInput ShortPaperInput(double duration_s, uint64_t seed) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = duration_s;
-  const Dataset data = sim::Simulate(sim_options, seed);
-  return testing::InputFromSimulation(sim_options, data, seed);
-}
-
 // The run stopped on `check`, once, and nothing else fired.
 void ExpectStoppedBy(const EstimatorResult& result, const std::string& check) {
   EXPECT_FALSE(result.ok);
@@ -30,7 +23,7 @@ void ExpectStoppedBy(const EstimatorResult& result, const std::string& check) {
 }
 
 TEST(FailureChecksTest, CleanRunTripsNoCheck) {
-  const EstimatorResult result = RunEstimator(EstimatorOptions{}, ShortPaperInput(4.0, 11));
+  const EstimatorResult result = RunEstimator(EstimatorOptions{}, testing::SimulatePaperRun(4.0, 11).input);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   EXPECT_EQ(result.stops, 0);
   EXPECT_TRUE(result.failure_checks.empty());
@@ -39,7 +32,7 @@ TEST(FailureChecksTest, CleanRunTripsNoCheck) {
 // A gyroscope whose bias runs away (0.05 rad/s more every second from t = 1 s, on every axis) is tracked by
 // the window; the bias norm check stops the run once the estimate passes the bound, and not before.
 TEST(FailureChecksTest, GyroBiasRunawayTripsTheBiasCheck) {
-  EstimatorInput input = ShortPaperInput(8.0, 12);
+  EstimatorInput input = testing::SimulatePaperRun(8.0, 12).input;
   for (ImuSample& s : input.imu) {
     const double t_s = static_cast<double>(s.t_ns - input.imu.front().t_ns) / kOneSecondNs;
     if (t_s > 1.0) s.w_B += Eigen::Vector3d::Constant(0.05 * (t_s - 1.0));
@@ -57,12 +50,12 @@ TEST(FailureChecksTest, GyroBiasRunawayTripsTheBiasCheck) {
 TEST(FailureChecksTest, SpeedAboveTheBoundTripsTheSpeedCheck) {
   EstimatorOptions options;
   options.failure.max_speed_mps = 0.5;
-  ExpectStoppedBy(RunEstimator(options, ShortPaperInput(3.0, 13)), "speed");
+  ExpectStoppedBy(RunEstimator(options, testing::SimulatePaperRun(3.0, 13).input), "speed");
 }
 
 // From t = 2 s the camera sees nothing: after max_lost_frames frames without tracks the run stops.
 TEST(FailureChecksTest, LosingEveryTrackTripsTheTrackCheck) {
-  EstimatorInput input = ShortPaperInput(4.0, 14);
+  EstimatorInput input = testing::SimulatePaperRun(4.0, 14).input;
   const int64_t blind_from_ns = input.frames.front().t_ns + 2 * kOneSecondNs;
   int blind_frames = 0;
   for (CameraFrame& frame : input.frames)

@@ -13,10 +13,7 @@ namespace {
 // oldest frame left next: the same covariance to rounding (the gauge makes it ill-conditioned: 1e-9 of
 // its norm apart).
 TEST(LinearizedOldest, TheCovarianceIsTheOneThatLinearizesEveryTerm) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 5.0;
-  const Dataset data = sim::Simulate(sim_options, 3);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 3);
+  const auto [data, input] = testing::SimulatePaperRun(5.0, 3);
   EstimatorOptions options;
   int compared = 0;
   const EstimatorResult result = RunEstimator(options, input, [&](Estimator& estimator) {

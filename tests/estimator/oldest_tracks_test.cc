@@ -30,10 +30,7 @@ double MedianPositionVariance(OldestTracks policy, const EstimatorInput& input) 
 }
 
 TEST(OldestTracks, ReanchoringClaimsMoreInformationThanRestarting) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 8.0;
-  const Dataset data = sim::Simulate(sim_options, 4);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 4);
+  const auto [data, input] = testing::SimulatePaperRun(8.0, 4);
   const double reanchor = MedianPositionVariance(OldestTracks::kReanchor, input);
   const double restart = MedianPositionVariance(OldestTracks::kRestart, input);
   std::printf("median position variance: reanchor %.3g m^2, restart %.3g m^2\n", reanchor, restart);

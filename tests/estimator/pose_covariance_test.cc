@@ -84,10 +84,7 @@ TEST(PoseCovariance, TheGaugePriorHoldsPositionAndYawOnly) {
 // 1.81 position, 1.22 orientation with the 15-keyframe window; docs/estimator.md): neither absurdly
 // cautious nor overconfident.
 TEST(PoseCovariance, EveryOutputPoseOfARunHasACovariance) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 8.0;
-  const Dataset data = sim::Simulate(sim_options, 4);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 4);
+  const auto [data, input] = testing::SimulatePaperRun(8.0, 4);
   EstimatorOptions options;
   options.covariance_rate_hz = 0.0;
   const EstimatorResult result = RunEstimator(options, input);

@@ -12,10 +12,7 @@ namespace vigil::estimator {
 namespace {
 
 TEST(RunEstimatorTest, ShortPaperRunIsAccurate) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 5.0;
-  const Dataset data = sim::Simulate(sim_options, 1);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 1);
+  const auto [data, input] = testing::SimulatePaperRun(5.0, 1);
   const EstimatorResult result = RunEstimator(EstimatorOptions{}, input);
   ASSERT_TRUE(result.ok) << result.failure_reason;
   // One state per solved frame (every third, at the default 10 of the camera's 30 per second) once the first
@@ -29,10 +26,8 @@ TEST(RunEstimatorTest, ShortPaperRunIsAccurate) {
 }
 
 TEST(RunEstimatorTest, SameInputGivesTheSameOutputBitForBit) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 2.5;  // the first window at 10 solved frames per second ends at 1.5 s
-  const Dataset data = sim::Simulate(sim_options, 2);
-  const EstimatorInput input = testing::InputFromSimulation(sim_options, data, 2);
+  const auto [data, input] =
+      testing::SimulatePaperRun(2.5, 2);  // the first window at 10 solved frames per second ends at 1.5 s
   const EstimatorResult a = RunEstimator(EstimatorOptions{}, input);
   const EstimatorResult b = RunEstimator(EstimatorOptions{}, input);
   ASSERT_TRUE(a.ok);
@@ -48,10 +43,7 @@ TEST(RunEstimatorTest, SameInputGivesTheSameOutputBitForBit) {
 // ground-truth initialization it cannot recover, so the run ends as failed with a reason, and no NaN reaches
 // the output.
 TEST(RunEstimatorTest, DivergenceEndsTheRunWithAReason) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 3.0;
-  const Dataset data = sim::Simulate(sim_options, 3);
-  EstimatorInput input = testing::InputFromSimulation(sim_options, data, 3);
+  auto [data, input] = testing::SimulatePaperRun(3.0, 3);
   for (ImuSample& s : input.imu)
     if (s.t_ns > 1'000'000'000 && s.t_ns < 1'500'000'000) s.a_B.z() += 1000.0;
   const EstimatorResult result = RunEstimator(EstimatorOptions{}, input);
@@ -66,10 +58,7 @@ TEST(RunEstimatorTest, DivergenceEndsTheRunWithAReason) {
 }
 
 TEST(RunEstimatorTest, RejectsInconsistentInput) {
-  sim::SimOptions sim_options;
-  sim_options.duration_s = 1.0;
-  const Dataset data = sim::Simulate(sim_options, 4);
-  EstimatorInput input = testing::InputFromSimulation(sim_options, data, 4);
+  auto [data, input] = testing::SimulatePaperRun(1.0, 4);
   EstimatorInput no_truth = input;
   no_truth.groundtruth.clear();
   EXPECT_THROW(RunEstimator(EstimatorOptions{}, no_truth), InputError);

@@ -23,6 +23,21 @@ inline EstimatorInput InputFromSimulation(const sim::SimOptions& options, const 
   return experiments::MakeEstimatorInput(config, data, data.imu);
 }
 
+// The default simulated scenario (sim::SimOptions' defaults: the paper's) for `duration_s`, and the
+// estimator's input from it.
+struct SimulatedRun {
+  Dataset data;
+  EstimatorInput input;
+};
+inline SimulatedRun SimulatePaperRun(double duration_s, uint64_t seed) {
+  sim::SimOptions options;
+  options.duration_s = duration_s;
+  SimulatedRun run;
+  run.data = sim::Simulate(options, seed);
+  run.input = InputFromSimulation(options, run.data, seed);
+  return run;
+}
+
 // RMSE of the position error after posyaw alignment of `estimate` onto the ground truth interpolated at the
 // estimate's times; NaN when nothing is estimated inside the ground truth's span.
 inline double PosYawAteRmse(const std::vector<NavState>& estimate, const std::vector<NavState>& groundtruth) {
