@@ -192,6 +192,11 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     failure_reason_ = "at t = " + FormatFixed(NsToS(t_ns), 3) + " s: " + reason;
     return FrameStatus::kFailed;
   }
+  CovarianceAndSlide(t_ns, keyframe, full);
+  return FrameStatus::kTracking;
+}
+
+void Estimator::CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full) {
   // After a keyframe the oldest frame leaves: its terms, linearized once at the solved estimate, serve its
   // marginalization and the covariance.
   std::optional<LinearizedOldest> oldest;
@@ -216,7 +221,6 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
     ++timing_.marginalizations;
   }
   if (keyframe && full) ++keyframes_;
-  return FrameStatus::kTracking;
 }
 
 double Estimator::KeyframeParallax(const Frame& older, const Frame& newer) const {

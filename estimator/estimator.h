@@ -163,6 +163,9 @@ class Estimator {
   // The checks of FailureOptions on the window after a solve; `previous` is the frame before the newest as it
   // was before the solve.
   Failure DetectFailure(const NavState& previous) const;
+  // After a tracked frame's solve: the newest pose's covariance when one is due, then the slide (the oldest
+  // frame leaves after a keyframe, else the second newest) once the window is full.
+  void CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full);
   // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
   void Slide(bool marginalize_oldest, bool with_prior);
   // The factors that involve the oldest frame (window size >= 2), with the usable tracks anchored in it,
