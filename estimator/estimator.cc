@@ -161,7 +161,11 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
       // motion's frames as long as the rest lasts, and the static start would never see a still window.
       // While the newest interval is still, the oldest frame leaves instead.
       const bool still_now = options_.zero_velocity.static_init && window_.back()->stationary;
-      Slide(keyframe || still_now, /*with_prior=*/false);
+      // No prior before initialization: the frame is dropped.
+      if (keyframe || still_now)
+        MarginalizeOldest(/*linearized=*/nullptr);
+      else
+        MarginalizeSecondNewest(/*with_prior=*/false);
       return FrameStatus::kWaitingForInit;
     }
   }
@@ -312,13 +316,6 @@ void Estimator::Reset() {
   initialized_ = false;
   holding_still_ = false;
   lost_frames_ = 0;
-}
-
-void Estimator::Slide(bool marginalize_oldest, bool with_prior) {
-  if (!marginalize_oldest) return MarginalizeSecondNewest(with_prior);
-  std::optional<LinearizedOldest> linearized;
-  if (with_prior && window_.size() >= 2) linearized.emplace(*this);
-  MarginalizeOldest(linearized ? &*linearized : nullptr);
 }
 
 }  // namespace vigil::estimator

@@ -166,8 +166,6 @@ class Estimator {
   // After a tracked frame's solve: the newest pose's covariance when one is due, then the slide (the oldest
   // frame leaves after a keyframe, else the second newest) once the window is full.
   void CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full);
-  // Drops the oldest frame (keyframe) or the second newest, updating the prior when `with_prior`.
-  void Slide(bool marginalize_oldest, bool with_prior);
   // The factors that involve the oldest frame (window size >= 2), with the usable tracks anchored in it,
   // whose depths its marginalization eliminates, and those tracks' ids; `costs` owns the factors built for
   // it.

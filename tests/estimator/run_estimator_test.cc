@@ -26,8 +26,8 @@ TEST(RunEstimatorTest, ShortPaperRunIsAccurate) {
 }
 
 TEST(RunEstimatorTest, SameInputGivesTheSameOutputBitForBit) {
-  const auto [data, input] =
-      testing::SimulatePaperRun(2.5, 2);  // the first window at 10 solved frames per second ends at 1.5 s
+  // The first window at 10 solved frames per second ends at 1.5 s.
+  const auto [data, input] = testing::SimulatePaperRun(2.5, 2);
   const EstimatorResult a = RunEstimator(EstimatorOptions{}, input);
   const EstimatorResult b = RunEstimator(EstimatorOptions{}, input);
   ASSERT_TRUE(a.ok);
