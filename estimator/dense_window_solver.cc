@@ -32,7 +32,7 @@ double LossOf(const ceres::LossFunction* loss, double s) {
   return rho[0];
 }
 
-// The window's states and depths, to undo a rejected step.
+// The window's states, points and depths, to undo a rejected step.
 class Snapshot {
  public:
   explicit Snapshot(const DenseWindowProblem& p) : p_(p) {}
@@ -40,6 +40,7 @@ class Snapshot {
     values_.clear();
     for (const double* pose : p_.poses) values_.insert(values_.end(), pose, pose + kPoseSize);
     for (const double* sb : p_.speed_biases) values_.insert(values_.end(), sb, sb + kSpeedBiasSize);
+    for (const double* point : p_.points) values_.insert(values_.end(), point, point + 3);
     for (const auto& track : p_.tracks) values_.push_back(*track.inv_depth);
   }
   void Restore() const {
@@ -51,6 +52,10 @@ class Snapshot {
     for (double* sb : p_.speed_biases) {
       std::copy_n(v, kSpeedBiasSize, sb);
       v += kSpeedBiasSize;
+    }
+    for (double* point : p_.points) {
+      std::copy_n(v, 3, point);
+      v += 3;
     }
     for (const auto& track : p_.tracks) *track.inv_depth = *v++;
   }
@@ -74,7 +79,7 @@ struct Linearization {
 };
 
 bool Linearize(const DenseWindowProblem& p, Linearization* out) {
-  WindowInformation info(p.poses, p.speed_biases);
+  WindowInformation info(p.poses, p.speed_biases, p.points);
   out->residuals = 0;
   for (const MarginalizationTerm& f : p.factors) {
     if (!info.AddTerm(f)) return false;
@@ -165,7 +170,7 @@ double DepthStepsAndModelDecrease(const Linearization& lin, const Eigen::VectorX
   return -model;
 }
 
-// Moves the states by dx and the depths by their steps.
+// Moves the states and points by dx and the depths by their steps.
 bool ApplyStep(const DenseWindowProblem& p, const Eigen::VectorXd& dx, const std::vector<double>& depth_steps,
                const ceres::Manifold& pose_manifold) {
   double moved[kPoseSize];
@@ -177,6 +182,9 @@ bool ApplyStep(const DenseWindowProblem& p, const Eigen::VectorXd& dx, const std
     Eigen::Map<Eigen::Matrix<double, kSpeedBiasSize, 1>>(p.speed_biases[k]) +=
         dx.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(static_cast<int>(k)));
   }
+  const int first_point = WindowInformation::kFrameSize * static_cast<int>(p.poses.size());
+  for (std::size_t j = 0; j < p.points.size(); ++j)
+    Eigen::Map<Eigen::Vector3d>(p.points[j]) += dx.segment<3>(first_point + 3 * static_cast<int>(j));
   for (std::size_t i = 0; i < p.tracks.size(); ++i) *p.tracks[i].inv_depth += depth_steps[i];
   return true;
 }
@@ -245,7 +253,7 @@ DenseSolveSummary SolveDenseWindow(const DenseWindowProblem& p, const DenseSolve
     DampedSystem(lin, radius, &A, &b);
     bool accepted = false;
     double new_cost = cost;
-    if (factorization.Compute(A)) {
+    if (factorization.Compute(A, static_cast<int>(p.points.size()))) {
       const Eigen::VectorXd dx = factorization.Solve(b);
       const double model_decrease = DepthStepsAndModelDecrease(lin, dx, radius, &depth_steps);
       snapshot.Save();

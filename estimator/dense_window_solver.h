@@ -1,9 +1,10 @@
 // A Levenberg-Marquardt solve built for the window (SolverOptions::backend: dense).
 //
 // Once every feature's inverse depth is eliminated, the window is small and dense: 15 numbers per frame
-// (pose tangent and speed-bias), 240 for a window of 16 frames. Each iteration linearizes it in the fixed
-// layout of WindowInformation (a track's reprojections and its depth's Schur complement in fixed sizes,
-// no index maps), solves the damped normal equations by a dense Cholesky factorization, recovers each depth's
+// (pose tangent and speed-bias), 240 for a window of 16 frames, and 3 per landmark point when the window
+// keeps them (window.oldest_tracks points). Each iteration linearizes it in the fixed layout of
+// WindowInformation (a track's reprojections and its depth's Schur complement in fixed sizes, no index
+// maps), solves the damped normal equations by a dense Cholesky factorization, recovers each depth's
 // step from its eliminated row, and accepts the step when the cost falls. A Ceres solve of the same window
 // spends most of its time in generic machinery (its evaluator, the block-sparse Schur eliminator of dynamic
 // sizes, the manifold products).
@@ -32,9 +33,10 @@ namespace vigil::estimator {
 struct DenseWindowProblem {
   std::vector<double*> poses;
   std::vector<double*> speed_biases;
-  bool hold_oldest_pose = false;             // the gauge, when there is no prior: frame 0's pose stays
-  const LinearPrior* prior = nullptr;        // may be null
-  std::vector<MarginalizationTerm> factors;  // over window blocks only
+  std::vector<double*> points;         // landmark points in W (window.oldest_tracks points), 3 doubles each
+  bool hold_oldest_pose = false;       // the gauge, when there is no prior: frame 0's pose stays
+  const LinearPrior* prior = nullptr;  // may be null
+  std::vector<MarginalizationTerm> factors;  // over window blocks only (the points' factors included)
   struct Track {
     double* inv_depth = nullptr;
     std::vector<WindowInformation::Reprojection> reprojections;  // all over inv_depth

@@ -180,7 +180,9 @@ FrameStatus Estimator::AddFrame(int64_t t_ns, const std::map<int, Eigen::Vector2
   timing_.optimize_s += SecondsSince(start);
   ++timing_.optimizations;
   if (solved) {
+    SyncPointDepths();
     features_.RemoveOutliers(CameraPoses(), camera_.fx);
+    DropLostPoints();
     failure = DetectFailure(previous);
   } else {
     failure.check = "solver";
@@ -205,7 +207,7 @@ void Estimator::CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full) {
   // marginalization and the covariance.
   std::optional<LinearizedOldest> oldest;
   const auto marg_start = std::chrono::steady_clock::now();
-  if (full && keyframe) oldest.emplace(*this);
+  if (full && keyframe && !PointsOn()) oldest.emplace(*this);
   timing_.marginalize_s += SecondsSince(marg_start);
   newest_pose_covariance_.reset();
   if (options_.pose_covariance &&
@@ -217,10 +219,15 @@ void Estimator::CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full) {
   }
   if (full) {
     const auto slide_start = std::chrono::steady_clock::now();
-    if (oldest)
+    if (oldest) {
       MarginalizeOldest(&*oldest);
-    else
+    } else if (keyframe) {
+      KeepPriorsOfOldestWithPoints();
+      MarginalizeOldest(/*linearized=*/nullptr);
+    } else {
       MarginalizeSecondNewest(/*with_prior=*/true);
+    }
+    DropLostPoints();
     timing_.marginalize_s += SecondsSince(slide_start);
     ++timing_.marginalizations;
   }
@@ -313,6 +320,7 @@ void Estimator::Reset() {
   prior_.reset();
   anchored_prior_.reset();
   bias_prior_.reset();
+  points_W_.clear();
   initialized_ = false;
   holding_still_ = false;
   lost_frames_ = 0;

@@ -153,6 +153,7 @@ class Estimator {
   void AppendOldestZeroVelocityTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
                                      std::vector<MarginalizationTerm>* terms);
   void AddReprojectionFactors(const Elimination& elimination, WindowProblem* w);
+  void AddPointFactors(WindowProblem* w);
   ceres::Solver::Summary SolveAndGate(ceres::Solver::Options solver_options, WindowProblem* w);
   void HoldGauge(const NavState& oldest_before);
   // A failure check that fired: its name (failure_checks()) and what it saw; `check` empty when none did.
@@ -182,7 +183,8 @@ class Estimator {
     OldestFrameTerms terms;
     OldestFrameMarginalization marginalization;  // over terms.frame
   };
-  // Drops the oldest frame; with `linearized` (else without a prior), its terms go into the priors.
+  // Drops the oldest frame; with `linearized`, its terms go into the priors (without: no prior, or the
+  // priors were kept by KeepPriorsOfOldestWithPoints).
   void MarginalizeOldest(const LinearizedOldest* linearized);
   void MarginalizeSecondNewest(bool with_prior);
   // A marginalization of the window: the prior it leaves from `previous` (may be null), in `form`; false
@@ -194,6 +196,26 @@ class Estimator {
   // is null.
   void KeepAnchoredPrior(const PriorUpdate& update);
   void Reset();
+  // window.oldest_tracks points (estimator_points.cc): the long tracks kept as landmark points in W.
+  bool PointsOn() const { return options_.window.oldest_tracks == OldestTracks::kPoints; }
+  bool IsPoint(int id) const { return points_W_.count(id) > 0; }
+  // The points' blocks, in the order of their track ids.
+  std::vector<double*> PointBlocks();
+  // One PointReprojectionFactor (with the robust loss) per observation of each point in the window frames,
+  // or in frame `frame_id` alone when it is given; `costs` owns them.
+  void AppendPointTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
+                        std::vector<MarginalizationTerm>* terms, std::optional<uint64_t> frame_id = {});
+  // The tracks anchored in the oldest frame that qualify (point_min_observations, point_min_baseline_ratio)
+  // become points, at their current depth.
+  void MakePointsOfOldest();
+  // Each point's track takes the depth of its point in its anchor frame (outlier tests and re-anchoring
+  // read it).
+  void SyncPointDepths();
+  // The points whose tracks ended leave both priors (marginalized) and the window.
+  void DropLostPoints();
+  // Before MarginalizeOldest(nullptr) with points: the qualifying tracks become points, and the oldest
+  // frame's terms (its observations of points included) go into both priors by the general elimination.
+  void KeepPriorsOfOldestWithPoints();
   // The newest pose's covariance from the window's information (estimator_covariance.cc). `oldest` (may be
   // null): the information of the terms over the oldest frame, already linearized at the current estimate
   // (LinearizedOldest), which the covariance then adds instead of linearizing them again.
@@ -251,6 +273,8 @@ class Estimator {
   EstimatorTiming timing_;
   GatingStats gating_;
   std::optional<Matrix6d> newest_pose_covariance_;
+  // window.oldest_tracks points: each point p_W by its track's id (stable addresses: a std::map).
+  std::map<int, std::array<double, 3>> points_W_;
   std::optional<int64_t> last_covariance_ns_;  // the newest frame a covariance was computed at
 };
 

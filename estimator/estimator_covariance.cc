@@ -32,9 +32,10 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance(const WindowInformation*
   // The zero-velocity terms of the frames standing still: without them a window at rest, whose tracks have
   // no parallax, holds no velocity and no translation, and has no covariance.
   std::vector<std::unique_ptr<ceres::CostFunction>> costs;
-  std::vector<MarginalizationTerm> still_terms;
-  AppendZeroVelocityTerms(speed_biases, &costs, &still_terms);
-  WindowInformation information(std::move(poses), std::move(speed_biases));
+  std::vector<MarginalizationTerm> terms;
+  AppendZeroVelocityTerms(speed_biases, &costs, &terms);
+  AppendPointTerms(&costs, &terms);  // the landmark points' observations (window.oldest_tracks points)
+  WindowInformation information(std::move(poses), std::move(speed_biases), PointBlocks());
   if (oldest != nullptr && !information.Add(*oldest)) return std::nullopt;
   if (bias_prior_ && oldest == nullptr &&
       !information.AddFactor(*bias_prior_, nullptr, {window_.front()->speed_bias}))
@@ -46,13 +47,15 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance(const WindowInformation*
             {window_[k - 1]->pose, window_[k - 1]->speed_bias, window_[k]->pose, window_[k]->speed_bias}))
       return std::nullopt;
   }
-  for (const MarginalizationTerm& term : still_terms)
+  for (const MarginalizationTerm& term : terms)
     if (!over_oldest(term.blocks) && !information.AddTerm(term)) return std::nullopt;
   // Each track's reprojections, its depth eliminated: what is left is the information of the window's states.
   std::vector<ReprojectionTerm> reprojections;
   std::vector<WindowInformation::Reprojection> track_terms;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track) || (oldest != nullptr && track.anchor_frame() == oldest_frame.id)) continue;
+    if (!features_.Usable(track) || IsPoint(id) ||
+        (oldest != nullptr && track.anchor_frame() == oldest_frame.id))
+      continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     track_terms.clear();
@@ -70,7 +73,7 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance(const WindowInformation*
   }
   if (!information.H().allFinite() || !information.g().allFinite()) return std::nullopt;
   WindowFactorization factorization;
-  if (!factorization.Compute(information.H())) return std::nullopt;
+  if (!factorization.Compute(information.H(), information.points())) return std::nullopt;
   const Matrix6d covariance = factorization.NewestPoseCovariance();
   if (!covariance.allFinite()) return std::nullopt;
   return covariance;

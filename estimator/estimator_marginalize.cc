@@ -61,7 +61,7 @@ Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
   AppendOldestZeroVelocityTerms(&out.costs, &frame.factors);
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track) || track.anchor_frame() != oldest.id) continue;
+    if (!features_.Usable(track) || track.anchor_frame() != oldest.id || IsPoint(id)) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     std::vector<WindowInformation::Reprojection>& terms = frame.tracks.emplace_back();

@@ -13,6 +13,7 @@
 #include "estimator/estimator.h"
 #include "estimator/imu_factor.h"
 #include "estimator/imu_gating.h"
+#include "estimator/point_reprojection_factor.h"
 #include "estimator/zero_velocity_factor.h"
 
 namespace vigil::estimator {
@@ -134,6 +135,7 @@ bool Estimator::Optimize(bool marginalize_oldest_next, std::string* reason) {
   AddImuFactors(&window);
   AddZeroVelocityFactors(&window);
   AddReprojectionFactors(elimination, &window);
+  AddPointFactors(&window);
   const NavState oldest_before = window_.front()->State();
   const ceres::Solver::Summary summary =
       SolveAndGate(WindowSolverOptions(options_.solver, marginalize_oldest_next, window.ordering), &window);
@@ -160,7 +162,7 @@ void Estimator::RepropagateImuFactors() {
 Estimator::Elimination Estimator::PlanElimination() {
   Elimination e;
   for (auto& [id, track] : features_.tracks())
-    if (features_.Usable(track)) e.tracks.emplace_back(id, &track);
+    if (features_.Usable(track) && !IsPoint(id)) e.tracks.emplace_back(id, &track);
   e.speed_bias.resize(window_.size());
   e.size = e.tracks.size();
   for (std::size_t k = 0; k < window_.size(); ++k) {
@@ -260,6 +262,19 @@ void Estimator::AddReprojectionFactors(const Elimination& elimination, WindowPro
   reprojection_factors_.KeepTracks(features_.tracks());
 }
 
+// The points' blocks after every frame's group (window.oldest_tracks points), and their factors.
+void Estimator::AddPointFactors(WindowProblem* w) {
+  for (double* point : PointBlocks()) {
+    w->problem.AddParameterBlock(point, kPointSize);
+    w->ordering->AddElementToGroup(point, static_cast<int>(window_.size()) + 1);
+  }
+  const std::size_t first = w->costs.size();
+  std::vector<MarginalizationTerm> terms;
+  AppendPointTerms(&w->costs, &terms);
+  for (std::size_t i = 0; i < terms.size(); ++i)
+    w->problem.AddResidualBlock(w->costs[first + i].get(), &loss_, terms[i].blocks[0], terms[i].blocks[1]);
+}
+
 // Solves; when IMU factors then fail their chi-square gate (in-estimator mitigation), they are inflated and
 // the problem is solved once more.
 ceres::Solver::Summary Estimator::SolveAndGate(ceres::Solver::Options solver_options, WindowProblem* w) {
@@ -292,6 +307,10 @@ void Estimator::HoldGauge(const NavState& oldest_before) {
     s.q_WB = (q * s.q_WB).normalized();
     s.v_W = R * s.v_W;
     f->SetState(s);
+  }
+  for (auto& [id, point] : points_W_) {
+    Eigen::Map<Eigen::Vector3d> p_W(point.data());
+    p_W = R * (p_W - oldest_after.p_W) + oldest_before.p_W;
   }
 }
 

@@ -25,9 +25,11 @@ bool Estimator::OptimizeDense(bool marginalize_oldest_next, std::string* reason)
   for (const ImuTerm& term : imu_terms)
     problem.factors.push_back({term.factor, nullptr, {term.blocks.begin(), term.blocks.end()}});
   AppendZeroVelocityTerms(problem.speed_biases, &costs, &problem.factors);
+  problem.points = PointBlocks();
+  AppendPointTerms(&costs, &problem.factors);
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track)) continue;
+    if (!features_.Usable(track) || IsPoint(id)) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     DenseWindowProblem::Track& t = problem.tracks.emplace_back();

@@ -42,10 +42,13 @@ struct GroundTruthInitOptions {
 // is 4.5). Restarting the track uses each observation once (NEES 1.8), but loses what ties a long track's
 // past to the window: ATE +74 % there, and one of five semi-real runs diverges
 // (docs/results/2026-12-estimator.md, "What the marginalization prior holds"). So VINS-Mono's rule stays the
-// default.
+// default. vigil's `points` keeps each long track with a baseline as a landmark point in W, a state of the
+// window and of its prior (OKVIS's design): each observation enters once, and the track ties the window to
+// its past for as long as it is seen (docs/estimator.md, "Long tracks as landmark points").
 enum class OldestTracks {
   kReanchor,  // VINS-Mono: marginalized into the prior, then kept, re-anchored in their next observation
   kRestart,   // marginalized into the prior, then erased: a later observation starts a new track
+  kPoints,    // vigil: the long tracks with a baseline become points in W kept in the prior; others reanchor
 };
 
 // Window length and keyframe policy. VINS-Mono keeps 10 keyframes and makes one at 10 px of parallax; at a
@@ -68,6 +71,9 @@ struct WindowOptions {
   double marginalization_eigen_threshold =
       1e-8;  // information at or below this counts as none (marginalization.h)
   OldestTracks oldest_tracks = OldestTracks::kReanchor;
+  // With oldest_tracks `points`: which tracks anchored in the leaving frame become points.
+  int point_min_observations = 10;        // observations in the window, the anchor's included
+  double point_min_baseline_ratio = 0.3;  // distance of the anchor's camera to the last one, over the depth
 
   template <class V>
   void Visit(V& v) {
@@ -96,9 +102,20 @@ struct WindowOptions {
             Bounds::Positive());
     v.Enum("oldest_tracks", oldest_tracks,
            config::EnumNames<OldestTracks>{{"reanchor", OldestTracks::kReanchor},
-                                           {"restart", OldestTracks::kRestart}},
+                                           {"restart", OldestTracks::kRestart},
+                                           {"points", OldestTracks::kPoints}},
            "the tracks anchored in the oldest frame when it leaves: reanchor (VINS-Mono: marginalized, then "
-           "re-anchored and used again), restart (marginalized, then erased)");
+           "re-anchored and used again), restart (marginalized, then erased), points (vigil: the long tracks "
+           "with a baseline become landmark points in W, kept in the window and its prior; the others "
+           "reanchor)");
+    v.Field("point_min_observations", point_min_observations,
+            "with oldest_tracks points: a track becomes a point with at least this many observations in the "
+            "window",
+            Bounds::AtLeast(2));
+    v.Field("point_min_baseline_ratio", point_min_baseline_ratio,
+            "with oldest_tracks points: ... and when its anchor's camera and its last one are apart by at "
+            "least this fraction of its depth",
+            Bounds::NonNegative());
   }
 };
 

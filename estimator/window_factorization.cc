@@ -19,63 +19,74 @@ bool IsSpeedBiasChain(const Eigen::MatrixXd& A, int frames) {
   return true;
 }
 
-// The block of A coupling speed-bias block k to frame j's pose, read from A's lower triangle.
-Eigen::Matrix<double, kSpeedBiasSize, kPoseTangentSize> SpeedBiasPoseBlock(const Eigen::MatrixXd& A, int k,
-                                                                           int j) {
-  if (j <= k)
-    return A.block<kSpeedBiasSize, kPoseTangentSize>(WindowInformation::SpeedBiasColumn(k),
-                                                     WindowInformation::PoseColumn(j));
-  return A
-      .block<kPoseTangentSize, kSpeedBiasSize>(WindowInformation::PoseColumn(j),
-                                               WindowInformation::SpeedBiasColumn(k))
-      .transpose();
+// The U x V block of A at (row_u, column_v), read from A's lower triangle (the block at (column_v, row_u)
+// transposed when row_u comes first).
+template <int U, int V>
+Eigen::Matrix<double, U, V> LowerBlock(const Eigen::MatrixXd& A, int row_u, int column_v) {
+  if (row_u >= column_v) return A.block<U, V>(row_u, column_v);
+  return A.block<V, U>(column_v, row_u).transpose();
 }
 
-// The first pose column (in the poses' own numbering, 6 per frame) where speed-bias block k is coupled to a
-// pose; the number of pose columns when none.
-int FirstCoupledPoseColumn(const Eigen::MatrixXd& A, int k, int frames) {
-  for (int j = 0; j < frames; ++j)
-    if ((SpeedBiasPoseBlock(A, k, j).array() != 0.0).any()) return kPoseTangentSize * j;
-  return kPoseTangentSize * frames;
+// dst = LowerBlock(A, row_u, column_v) of sizes U x size_v, size_v 3 (a point) or 6 (a pose).
+template <int U, class Destination>
+void CopyLowerBlock(const Eigen::MatrixXd& A, int row_u, int column_v, int size_v, Destination&& dst) {
+  if (size_v == 3)
+    dst = LowerBlock<U, 3>(A, row_u, column_v);
+  else
+    dst = LowerBlock<U, kPoseTangentSize>(A, row_u, column_v);
 }
 
 }  // namespace
 
-bool WindowFactorization::Compute(const Eigen::MatrixXd& A) {
-  frames_ = static_cast<int>(A.rows()) / WindowInformation::kFrameSize;
-  chain_ = A.rows() == A.cols() && A.rows() == WindowInformation::kFrameSize * frames_ &&
-           IsSpeedBiasChain(A, frames_);
+bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
+  frames_ = (static_cast<int>(A.rows()) - 3 * points) / WindowInformation::kFrameSize;
+  const int n = frames_;
+  chain_ = A.rows() == A.cols() && A.rows() == WindowInformation::kFrameSize * n + 3 * points &&
+           IsSpeedBiasChain(A, n);
   if (!chain_) {
     dense_.compute(A);
     return dense_.info() == Eigen::Success;
   }
-  const int n = frames_, pose_columns = kPoseTangentSize * n;
-  // The poses' block, lower triangle.
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(pose_columns, pose_columns);
-  for (int j = 0; j < n; ++j)
-    for (int i = j; i < n; ++i)
-      S.block<kPoseTangentSize, kPoseTangentSize>(kPoseTangentSize * i, kPoseTangentSize * j) =
-          A.block<kPoseTangentSize, kPoseTangentSize>(WindowInformation::PoseColumn(i),
-                                                      WindowInformation::PoseColumn(j));
+  // The Schur complement's blocks: the points, then the poses, the newest last.
+  schur_blocks_.clear();
+  for (int j = 0; j < points; ++j)
+    schur_blocks_.push_back({WindowInformation::kFrameSize * n + 3 * j, 3 * j, 3});
+  for (int i = 0; i < n; ++i)
+    schur_blocks_.push_back(
+        {WindowInformation::PoseColumn(i), 3 * points + kPoseTangentSize * i, kPoseTangentSize});
+  const int schur_columns = 3 * points + kPoseTangentSize * n;
+  // Its lower triangle, as A holds it.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(schur_columns, schur_columns);
+  for (std::size_t v = 0; v < schur_blocks_.size(); ++v)
+    for (std::size_t u = v; u < schur_blocks_.size(); ++u) {
+      const SchurBlock& bu = schur_blocks_[u];
+      const SchurBlock& bv = schur_blocks_[v];
+      auto block = S.block(bu.s, bv.s, bu.size, bv.size);
+      if (bu.size == 3)
+        CopyLowerBlock<3>(A, bu.a, bv.a, bv.size, block);
+      else
+        CopyLowerBlock<kPoseTangentSize>(A, bu.a, bv.a, bv.size, block);
+    }
   pivots_.resize(n);
   couplings_.resize(n);
   first_pose_column_.resize(n);
-  pose_rows_.setZero(kSpeedBiasSize * n, pose_columns);
+  pose_rows_.setZero(kSpeedBiasSize * n, schur_columns);
   // Speed-bias blocks from the newest to the oldest: block k's pivot is reduced by the newer block's
-  // elimination, its pose rows gain the newer block's fill.
+  // elimination, its rows over the Schur complement gain the newer block's fill.
   for (int k = n - 1; k >= 0; --k) {
-    int first = FirstCoupledPoseColumn(A, k, n);
     auto rows = pose_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * k);
-    for (int j = first / kPoseTangentSize; j < n; ++j)
-      rows.middleCols<kPoseTangentSize>(kPoseTangentSize * j) = SpeedBiasPoseBlock(A, k, j);
-    SpeedBiasMatrix pivot = A.block<kSpeedBiasSize, kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k),
-                                                                    WindowInformation::SpeedBiasColumn(k));
+    const int sb = WindowInformation::SpeedBiasColumn(k);
+    int first = schur_columns;
+    for (const SchurBlock& b : schur_blocks_) {
+      auto block = rows.middleCols(b.s, b.size);
+      CopyLowerBlock<kSpeedBiasSize>(A, sb, b.a, b.size, block);
+      if (first == schur_columns && (block.array() != 0.0).any()) first = b.s;
+    }
+    SpeedBiasMatrix pivot = A.block<kSpeedBiasSize, kSpeedBiasSize>(sb, sb);
     if (k + 1 < n) {
       // The factor's coupling E = A_(k+1),k^T L_(k+1)^-T, and the newer block's fill E X_(k+1).
       SpeedBiasMatrix& E = couplings_[k];
-      E = A.block<kSpeedBiasSize, kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k + 1),
-                                                  WindowInformation::SpeedBiasColumn(k))
-              .transpose();
+      E = A.block<kSpeedBiasSize, kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k + 1), sb).transpose();
       pivots_[k + 1].matrixU().solveInPlace<Eigen::OnTheRight>(E);
       pivot.noalias() -= E * E.transpose();
       first = std::min(first, first_pose_column_[k + 1]);
@@ -85,7 +96,7 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A) {
     pivots_[k].compute(pivot);
     if (pivots_[k].info() != Eigen::Success) return false;
     first_pose_column_[k] = first;
-    const int width = pose_columns - first;
+    const int width = schur_columns - first;
     // X = L_k^-1 X by the explicit inverse: a 9-row product, where a triangular solve of this size spends
     // its time in blocking.
     const SpeedBiasMatrix L_inv = pivots_[k].matrixL().solve(SpeedBiasMatrix::Identity());
@@ -104,36 +115,35 @@ WindowFactorization::PoseRowsBlock WindowFactorization::NonzeroPoseRows(int k) c
 
 Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
   if (!chain_) return dense_.solve(b);
-  const int n = frames_, pose_columns = kPoseTangentSize * n;
-  // Forward: the chain (newest first), then the poses' right-hand side reduced by it.
-  Eigen::VectorXd y(kSpeedBiasSize * n), b_poses(pose_columns);
+  const int n = frames_;
+  // Forward: the chain (newest first), then the Schur complement's right-hand side reduced by it.
+  Eigen::VectorXd y(kSpeedBiasSize * n), b_schur(pose_rows_.cols());
   for (int k = n - 1; k >= 0; --k) {
     auto y_k = y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
     y_k = b.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k));
     if (k + 1 < n) y_k.noalias() -= couplings_[k] * y.segment<kSpeedBiasSize>(kSpeedBiasSize * (k + 1));
     pivots_[k].matrixL().solveInPlace(y_k);
   }
-  for (int j = 0; j < n; ++j)
-    b_poses.segment<kPoseTangentSize>(kPoseTangentSize * j) =
-        b.segment<kPoseTangentSize>(WindowInformation::PoseColumn(j));
+  for (const SchurBlock& block : schur_blocks_)
+    b_schur.segment(block.s, block.size) = b.segment(block.a, block.size);
   for (int k = 0; k < n; ++k) {
     const PoseRowsBlock rows = NonzeroPoseRows(k);
-    b_poses.tail(rows.cols()).noalias() -= rows.transpose() * y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
+    b_schur.tail(rows.cols()).noalias() -= rows.transpose() * y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
   }
-  const Eigen::VectorXd x_poses = poses_.solve(b_poses);
-  // Backward: the chain from the oldest, given the poses.
+  const Eigen::VectorXd x_schur = poses_.solve(b_schur);
+  // Backward: the chain from the oldest, given the points and poses.
   Eigen::VectorXd x(b.size());
+  for (const SchurBlock& block : schur_blocks_)
+    x.segment(block.a, block.size) = x_schur.segment(block.s, block.size);
   for (int k = 0; k < n; ++k) {
     const PoseRowsBlock rows = NonzeroPoseRows(k);
     Eigen::Matrix<double, kSpeedBiasSize, 1> x_k = y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
-    x_k.noalias() -= rows * x_poses.tail(rows.cols());
+    x_k.noalias() -= rows * x_schur.tail(rows.cols());
     if (k > 0)
       x_k.noalias() -= couplings_[k - 1].transpose() *
                        x.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k - 1));
     pivots_[k].matrixU().solveInPlace(x_k);
     x.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k)) = x_k;
-    x.segment<kPoseTangentSize>(WindowInformation::PoseColumn(k)) =
-        x_poses.segment<kPoseTangentSize>(kPoseTangentSize * k);
   }
   return x;
 }
@@ -141,11 +151,12 @@ Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
 WindowFactorization::PoseMatrix WindowFactorization::NewestPoseCovariance() const {
   const int newest = WindowInformation::PoseColumn(frames_ - 1);
   if (!chain_) {
-    Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(WindowInformation::kFrameSize * frames_, kPoseTangentSize);
+    Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(dense_.rows(), kPoseTangentSize);
     unit.middleRows<kPoseTangentSize>(newest).setIdentity();
     return dense_.solve(unit).middleRows<kPoseTangentSize>(newest);
   }
-  // The newest pose is the last column of the poses' factor: its Schur complement is L_nn L_nn^T.
+  // The newest pose is the last block of the Schur complement's factor: its own Schur complement is
+  // L_nn L_nn^T.
   const PoseMatrix L_nn = poses_.matrixLLT()
                               .bottomRightCorner<kPoseTangentSize, kPoseTangentSize>()
                               .triangularView<Eigen::Lower>();

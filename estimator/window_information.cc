@@ -13,9 +13,12 @@ using Vector6d = Eigen::Matrix<double, kPose, 1>;
 
 }  // namespace
 
-WindowInformation::WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks)
-    : pose_blocks_(std::move(pose_blocks)), speed_bias_blocks_(std::move(speed_bias_blocks)) {
-  const int n = kFrameSize * frames();
+WindowInformation::WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks,
+                                     std::vector<double*> point_blocks)
+    : pose_blocks_(std::move(pose_blocks)),
+      speed_bias_blocks_(std::move(speed_bias_blocks)),
+      point_blocks_(std::move(point_blocks)) {
+  const int n = PointColumn(points());
   H_.setZero(n, n);
   g_.setZero(n);
 }
@@ -25,6 +28,8 @@ WindowInformation::BlockColumn WindowInformation::ColumnOf(const double* block) 
     if (pose_blocks_[k] == block) return {PoseColumn(k), kPoseTangentSize};
     if (speed_bias_blocks_[k] == block) return {SpeedBiasColumn(k), kSpeedBiasSize};
   }
+  for (int j = 0; j < points(); ++j)
+    if (point_blocks_[j] == block) return {PointColumn(j), 3};
   return {};
 }
 
@@ -148,11 +153,15 @@ bool WindowInformation::AddTrack(const Reprojection* first, const Reprojection* 
   double h_dd = 0.0, b_d = 0.0;
   std::vector<std::pair<int, Vector6d>>& w = d.w;  // (pose column, d^2 cost / d pose d depth)
   w.reserve(static_cast<std::size_t>(last - first) + 1);
-  const int anchor = ColumnOf(first->blocks[0]).column;
+  const auto pose_column = [this](const double* block) {
+    const BlockColumn c = ColumnOf(block);
+    return c.tangent == kPose ? c.column : -1;
+  };
+  const int anchor = pose_column(first->blocks[0]);
   if (anchor < 0) return false;
   w.emplace_back(anchor, Vector6d::Zero());
   for (const Reprojection* t = first; t != last; ++t) {
-    const int observer = ColumnOf(t->blocks[1]).column;
+    const int observer = pose_column(t->blocks[1]);
     if (observer < 0 || t->blocks[0] != first->blocks[0] || t->blocks[2] != first->blocks[2]) return false;
     Eigen::Vector2d r;
     Eigen::Matrix<double, 2, kPoseSize, Eigen::RowMajor> J_anchor, J_observer;
@@ -232,7 +241,7 @@ void WindowInformation::AddPoseBlocks(const Eigen::MatrixXd& pose_matrix, double
 
 bool WindowInformation::Add(const WindowInformation& other) {
   if (other.pose_blocks_ != pose_blocks_ || other.speed_bias_blocks_ != speed_bias_blocks_ ||
-      separate_fill_ || other.separate_fill_)
+      other.point_blocks_ != point_blocks_ || separate_fill_ || other.separate_fill_)
     return false;
   mutable_H() += other.H();
   g_ += other.g_;

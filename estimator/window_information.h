@@ -1,7 +1,7 @@
 // The window's information: the Gauss-Newton normal equations H dx = -g of its factors at the current
 // estimate, in the tangent space of its states, with every feature's inverse depth eliminated (Schur
 // complement), in a fixed layout: frame k's pose tangent [delta p_W, delta theta_B] at column 15 k, its
-// speed-bias [v_W, b_a, b_g] at 15 k + 6.
+// speed-bias [v_W, b_a, b_g] at 15 k + 6, and landmark points (if any) after the frames.
 //
 // It holds what EliminateDropped (marginalization.h) gives for the same factors with the depths dropped, at
 // a fraction of the cost: the structure is known, so a track's reprojections are linearized in fixed sizes
@@ -29,8 +29,11 @@ class WindowInformation {
   static constexpr int SpeedBiasColumn(int frame) { return kFrameSize * frame + kPoseTangentSize; }
 
   // Zero equations over `frames` frames; `pose_blocks[k]` and `speed_bias_blocks[k]` are frame k's parameter
-  // blocks (kPoseSize and kSpeedBiasSize doubles), which the factors name.
-  WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks);
+  // blocks (kPoseSize and kSpeedBiasSize doubles), which the factors name. `point_blocks` (3 doubles each:
+  // landmark points in W, window.oldest_tracks points) follow the frames, point j at PointColumn(j).
+  WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks,
+                    std::vector<double*> point_blocks = {});
+  int PointColumn(int point) const { return kFrameSize * frames() + 3 * point; }
 
   // Adds a factor over window blocks (each one of the frames' pose or speed-bias blocks), evaluated at their
   // current values with `loss` (may be null) applied. False when the factor fails, a block is not the
@@ -89,6 +92,7 @@ class WindowInformation {
   };
   BlockColumn ColumnOf(const double* block) const;
   int frames() const { return static_cast<int>(pose_blocks_.size()); }
+  int points() const { return static_cast<int>(point_blocks_.size()); }
   // Symmetric, both triangles filled.
   const Eigen::MatrixXd& H() const {
     MirrorUpperTriangles();
@@ -117,6 +121,7 @@ class WindowInformation {
 
   std::vector<double*> pose_blocks_;
   std::vector<double*> speed_bias_blocks_;
+  std::vector<double*> point_blocks_;
   mutable Eigen::MatrixXd H_;  // mutable: the lower triangle is filled lazily (MirrorUpperTriangles)
   Eigen::VectorXd g_;
   bool separate_fill_ = false;

@@ -9,6 +9,7 @@
 #include "estimator/bias_prior_factor.h"
 #include "estimator/imu_factor.h"
 #include "estimator/marginalization.h"
+#include "estimator/point_reprojection_factor.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/reprojection_factor.h"
 #include "estimator/zero_velocity_factor.h"
@@ -185,6 +186,34 @@ TEST(FactorJacobianTest, ReprojectionFactor) {
   const std::vector<double> pose_j =
       Pose(Eigen::Vector3d(0.1, 0.3, -0.05), ExpQ(Eigen::Vector3d(0.0, 0.05, 0.2)));
   WorstJacobianError(factor, {pose_i, pose_j, {0.2}});
+}
+
+// A landmark point's factor: its Jacobians, and the same residual as the anchored-depth factor for the same
+// point in W.
+TEST(FactorJacobianTest, PointReprojectionFactor) {
+  Eigen::Isometry3d T_BC = Eigen::Isometry3d::Identity();
+  T_BC.linear() << 0, 0, -1, -1, 0, 0, 0, 1, 0;
+  T_BC.translation() = Eigen::Vector3d(0.05, 0.04, 0.03);
+  const Eigen::Vector2d n_i(0.1, -0.2), n_j(0.12, -0.18);
+  const double rho = 0.2;
+  const std::vector<double> pose_i = Pose(Eigen::Vector3d(0, 0, 0), ExpQ(Eigen::Vector3d(0.01, 0.02, 0.1)));
+  const std::vector<double> pose_j =
+      Pose(Eigen::Vector3d(0.1, 0.3, -0.05), ExpQ(Eigen::Vector3d(0.0, 0.05, 0.2)));
+  const Eigen::Isometry3d T_WB_i = Eigen::Translation3d(PoseP(pose_i.data())) * PoseQ(pose_i.data());
+  const Eigen::Vector3d p_W = T_WB_i * T_BC * (Eigen::Vector3d(n_i.x(), n_i.y(), 1.0) / rho);
+  const std::vector<double> point = {p_W.x(), p_W.y(), p_W.z()};
+  const PointReprojectionFactor factor(n_j, T_BC, 460.0 / 1.5);
+  WorstJacobianError(factor, {pose_j, point});
+
+  const ReprojectionFactor anchored(n_i, n_j, T_BC, 460.0 / 1.5);
+  Eigen::Vector2d r_point, r_anchored;
+  const double* point_blocks[2] = {pose_j.data(), point.data()};
+  const double depth = rho;
+  const double* anchored_blocks[3] = {pose_i.data(), pose_j.data(), &depth};
+  ASSERT_TRUE(factor.Evaluate(point_blocks, r_point.data(), nullptr));
+  ASSERT_TRUE(anchored.Evaluate(anchored_blocks, r_anchored.data(), nullptr));
+  EXPECT_GT(r_point.norm(), 1.0);
+  EXPECT_LT((r_point - r_anchored).norm(), 1e-9);
 }
 
 // A prior built from a reprojection and an IMU factor: its Jacobian and its residual around x0.

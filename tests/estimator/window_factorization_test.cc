@@ -3,6 +3,7 @@
 #include "estimator/window_factorization.h"
 
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -36,15 +37,39 @@ class WindowFactorizationTest : public ::testing::Test {
     H(prior_columns, prior_columns) += prior;
     return H;
   }
+  // The window with `points` landmark points after the frames: each point observed by a few poses, and the
+  // prior over the points, the poses and the oldest speed-bias block (it couples them all).
+  Eigen::MatrixXd WindowWithPoints(int frames, int points) {
+    const int n = 15 * frames + 3 * points;
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, n);
+    H.topLeftCorner(15 * frames, 15 * frames) = Window(frames);
+    std::vector<int> prior_columns;
+    for (int j = 0; j < points; ++j) {
+      const int point = 15 * frames + 3 * j;
+      for (int c = 0; c < 3; ++c) prior_columns.push_back(point + c);
+      for (int k = j % 3; k < frames; k += 2) {
+        std::vector<int> observation;
+        for (int c = 0; c < 6; ++c) observation.push_back(15 * k + c);
+        for (int c = 0; c < 3; ++c) observation.push_back(point + c);
+        H(observation, observation) += RandomInformation(2, 9);
+      }
+    }
+    for (int c = 0; c < 15; ++c) prior_columns.push_back(c);
+    const int prior_size = static_cast<int>(prior_columns.size());
+    H(prior_columns, prior_columns) += RandomInformation(prior_size + 5, prior_size);
+    return H;
+  }
   Eigen::VectorXd RandomVector(int n) {
     Eigen::VectorXd v(n);
     for (int i = 0; i < n; ++i) v[i] = n01_(rng_);
     return v;
   }
   // Solve and the newest pose's covariance agree with a dense inverse.
-  void ExpectTheDenseAnswer(const Eigen::MatrixXd& H, const WindowFactorization& factorization) {
+  // `points`: the landmark points after the frames.
+  void ExpectTheDenseAnswer(const Eigen::MatrixXd& H, const WindowFactorization& factorization,
+                            int points = 0) {
     const Eigen::MatrixXd Sigma = H.inverse();
-    const int newest = static_cast<int>(H.rows()) - 15;
+    const int newest = static_cast<int>(H.rows()) - 3 * points - 15;
     const Eigen::MatrixXd expected = Sigma.block(newest, newest, 6, 6);
     EXPECT_LT((factorization.NewestPoseCovariance() - expected).norm(), 1e-9 * expected.norm());
     const Eigen::VectorXd b = RandomVector(static_cast<int>(H.rows()));
@@ -65,6 +90,20 @@ TEST_F(WindowFactorizationTest, TheSpeedBiasChainGivesTheDenseAnswer) {
     EXPECT_TRUE(factorization.chain());
     ExpectTheDenseAnswer(H, factorization);
   }
+}
+
+TEST_F(WindowFactorizationTest, LandmarkPointsJoinThePosesSchurComplement) {
+  for (const int frames : {2, 5, 16})
+    for (const int points : {1, 7, 40}) {
+      SCOPED_TRACE(std::to_string(frames) + " frames, " + std::to_string(points) + " points");
+      Eigen::MatrixXd H = WindowWithPoints(frames, points);
+      const Eigen::MatrixXd symmetric = H;
+      H.triangularView<Eigen::StrictlyUpper>().setConstant(std::nan(""));
+      WindowFactorization factorization;
+      ASSERT_TRUE(factorization.Compute(H, points));
+      EXPECT_TRUE(factorization.chain());
+      ExpectTheDenseAnswer(symmetric, factorization, points);
+    }
 }
 
 TEST_F(WindowFactorizationTest, OnlyTheLowerTriangleIsRead) {
