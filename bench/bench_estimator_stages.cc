@@ -3,8 +3,9 @@
 // oldest frame's terms linearized once for both (as the estimator does) or twice (`_unshared`).
 //   build/bench/bench_estimator_stages [--benchmark_repetitions=10]
 // Windows: the paper scenario (configs/paper.yaml, seed 1) at 10 s, and the semi-real V1_01 flight
-// (configs/euroc_v1_01_semireal.yaml, seed 1) at 20 s; a window whose recording is absent is skipped with a
-// message. Counters: the window's frames and usable tracks. Speeds compare as ratios within one run, or as
+// (configs/euroc_v1_01_semireal.yaml, seed 1) at 20 s, also with its long tracks kept as landmark points
+// (window.oldest_tracks points); a window whose recording is absent is skipped with a message. Counters: the
+// window's frames, usable tracks and points. Speeds compare as ratios within one run, or as
 // instruction counts (docs/development.md, "Benchmarks").
 #include <functional>
 #include <string>
@@ -30,6 +31,11 @@ struct Window {
 const Window kPaper{"paper.yaml", {"seed=1", "glitch.enabled=false", "estimator.solver.max_time_s=0"}, 10.0};
 const Window kSemiReal{
     "euroc_v1_01_semireal.yaml", {"seed=1", "duration_s=30", "estimator.solver.max_time_s=0"}, 20.0};
+// The same window with the long tracks kept as landmark points.
+const Window kSemiRealPoints{
+    "euroc_v1_01_semireal.yaml",
+    {"seed=1", "duration_s=30", "estimator.solver.max_time_s=0", "estimator.window.oldest_tracks=points"},
+    20.0};
 
 // Runs the window's recording up to its time, then calls `stage` with the estimator's stages there.
 void OnWindow(benchmark::State& state, const Window& window,
@@ -52,6 +58,7 @@ void OnWindow(benchmark::State& state, const Window& window,
     EstimatorStages stages(&estimator);
     state.counters["frames"] = stages.window_frames();
     state.counters["tracks"] = stages.usable_tracks();
+    state.counters["points"] = stages.points();
     stage(stages);
     reached = true;
     return false;
@@ -102,6 +109,9 @@ BENCHMARK_CAPTURE(BM_Marginalize, semireal_general, kSemiReal, true)->Unit(bench
 BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal, kSemiReal, true)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_unshared, kSemiReal, false)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, semireal_points_dense, kSemiRealPoints, SolverBackend::kDense)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Covariance, semireal_points, kSemiRealPoints)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vigil::estimator

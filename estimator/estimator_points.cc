@@ -5,6 +5,8 @@
 // the priors with the point kept; its later observations are PointReprojectionFactors on (pose, point), so
 // each observation counts once, and the prior ties the window to the track's past for as long as it is
 // seen. A point leaves the priors (marginalized) when its track ends. The other tracks re-anchor (VINS-Mono).
+#include <algorithm>
+#include <iterator>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -62,22 +64,24 @@ void Estimator::SyncPointDepths() {
 }
 
 void Estimator::DropLostPoints() {
-  for (auto it = points_W_.begin(); it != points_W_.end();) {
-    if (features_.tracks().count(it->first) > 0) {
-      ++it;
-      continue;
-    }
-    const double* point = it->second.data();
-    const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
-      SchurComplement schur;
-      const double threshold = options_.window.marginalization_eigen_threshold;
-      return EliminateDropped(previous, {}, {point}, threshold, &schur) &&
-             PriorOfSchurComplement(std::move(schur), threshold, form, prior);
-    };
-    if (prior_ && prior_->Involves(point)) KeepPrior(update);
-    if (anchored_prior_ && anchored_prior_->Involves(point)) KeepAnchoredPrior(update);
-    it = points_W_.erase(it);
-  }
+  DroppedBlocks lost;
+  for (const auto& [id, p_W] : points_W_)
+    if (features_.tracks().count(id) == 0) lost.push_back(p_W.data());
+  if (lost.empty()) return;
+  // All of them in one elimination per prior: each prior is factorized once.
+  const auto involves_lost = [&](const LinearPrior& prior) {
+    return std::any_of(lost.begin(), lost.end(), [&](const double* p) { return prior.Involves(p); });
+  };
+  const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
+    SchurComplement schur;
+    const double threshold = options_.window.marginalization_eigen_threshold;
+    return EliminateDropped(previous, {}, lost, threshold, &schur) &&
+           PriorOfSchurComplement(std::move(schur), threshold, form, prior);
+  };
+  if (prior_ && involves_lost(*prior_)) KeepPrior(update);
+  if (anchored_prior_ && involves_lost(*anchored_prior_)) KeepAnchoredPrior(update);
+  for (auto it = points_W_.begin(); it != points_W_.end();)
+    it = features_.tracks().count(it->first) == 0 ? points_W_.erase(it) : std::next(it);
 }
 
 void Estimator::KeepPriorsOfOldestWithPoints() {

@@ -29,7 +29,7 @@ WindowInformation::BlockColumn WindowInformation::ColumnOf(const double* block) 
     if (speed_bias_blocks_[k] == block) return {SpeedBiasColumn(k), kSpeedBiasSize};
   }
   for (int j = 0; j < points(); ++j)
-    if (point_blocks_[j] == block) return {PointColumn(j), 3};
+    if (point_blocks_[j] == block) return {PointColumn(j), kPointSize};
   return {};
 }
 
@@ -47,6 +47,10 @@ bool WindowInformation::AddFactor(const ceres::CostFunction& cost, const ceres::
   static const std::vector<int32_t> kTwoFrameBlocks = {kPoseSize, kSpeedBiasSize, kPoseSize, kSpeedBiasSize};
   if (rows == kTwoFrameRows && sizes == kTwoFrameBlocks)
     return AddTwoFrameFactor(cost, loss, blocks, columns);
+  static const std::vector<int32_t> kPosePointBlocks = {kPoseSize, kPointSize};
+  if (rows == 2 && sizes == kPosePointBlocks && columns[0].tangent == kPose &&
+      columns[1].tangent == kPointSize)
+    return AddPointObservation(cost, loss, blocks, columns[0].column, columns[1].column);
   for (const int32_t size : sizes) ambient_total += size;
   std::vector<double> jacobian_storage(static_cast<std::size_t>(rows) * ambient_total);
   std::vector<double*> jacobians;
@@ -119,6 +123,27 @@ bool WindowInformation::AddTwoFrameFactor(const ceres::CostFunction& cost, const
   AddUpperBlock<kPose, kPose>(J, jp1, jp1, p1, p1, &H_);
   AddUpperBlock<kPose, kSpeedBias>(J, jp1, js1, p1, s1, &H_);
   AddUpperBlock<kSpeedBias, kSpeedBias>(J, js1, js1, s1, s1, &H_);
+  return true;
+}
+
+bool WindowInformation::AddPointObservation(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                                            const TermBlocks& blocks, int pose, int point) {
+  Eigen::Vector2d r;
+  Eigen::Matrix<double, 2, kPoseSize, Eigen::RowMajor> J_pose;
+  Eigen::Matrix<double, 2, kPointSize, Eigen::RowMajor> J_point;
+  double* jacobians[2] = {J_pose.data(), J_point.data()};
+  if (!cost.Evaluate(blocks.data(), r.data(), jacobians) || !r.allFinite()) return false;
+  Eigen::Matrix<double, 2, kPose + kPointSize, Eigen::RowMajor> J;
+  J << J_pose.leftCols<kPose>(), J_point;
+  if (!J.allFinite()) return false;
+  Robustify(loss, r, J);
+  lower_stale_ = true;
+  g_.segment<kPose>(pose).noalias() += J.leftCols<kPose>().transpose() * r;
+  g_.segment<kPointSize>(point).noalias() += J.rightCols<kPointSize>().transpose() * r;
+  // The points follow the frames: the pose's columns come first (the upper block triangle).
+  AddUpperBlock<kPose, kPose>(J, 0, 0, pose, pose, &H_);
+  AddUpperBlock<kPose, kPointSize>(J, 0, kPose, pose, point, &H_);
+  AddUpperBlock<kPointSize, kPointSize>(J, kPose, kPose, point, point, &H_);
   return true;
 }
 

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "estimator/marginalization.h"
+#include "estimator/point_reprojection_factor.h"
 #include "estimator/pose_manifold.h"
 #include "estimator/reprojection_factor.h"
 
@@ -33,7 +34,7 @@ class WindowInformation {
   // landmark points in W, window.oldest_tracks points) follow the frames, point j at PointColumn(j).
   WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks,
                     std::vector<double*> point_blocks = {});
-  int PointColumn(int point) const { return kFrameSize * frames() + 3 * point; }
+  int PointColumn(int point) const { return kFrameSize * frames() + kPointSize * point; }
 
   // Adds a factor over window blocks (each one of the frames' pose or speed-bias blocks), evaluated at their
   // current values with `loss` (may be null) applied. False when the factor fails, a block is not the
@@ -110,6 +111,10 @@ class WindowInformation {
   static constexpr int kTwoFrameRows = 15;
   bool AddTwoFrameFactor(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
                          const TermBlocks& blocks, const std::vector<BlockColumn>& columns);
+  // AddFactor for a factor of 2 rows over (pose, landmark point) (PointReprojectionFactor), in fixed sizes,
+  // into the upper block triangle; `pose` and `point` are the blocks' columns.
+  bool AddPointObservation(const ceres::CostFunction& cost, const ceres::LossFunction* loss,
+                           const TermBlocks& blocks, int pose, int point);
   // Adds H and g, laid out over `columns` in order (each block's tangent rows), to the window's.
   void Accumulate(const std::vector<BlockColumn>& columns, const Eigen::MatrixXd& H,
                   const Eigen::VectorXd& g);
