@@ -112,6 +112,11 @@ BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_unshared, kSemiReal, fal
 BENCHMARK_CAPTURE(BM_Solve, semireal_points_dense, kSemiRealPoints, SolverBackend::kDense)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Covariance, semireal_points, kSemiRealPoints)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, semireal_points, kSemiRealPoints, false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Marginalize, semireal_points_general, kSemiRealPoints, true)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_points, kSemiRealPoints, true)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vigil::estimator

@@ -207,7 +207,10 @@ void Estimator::CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full) {
   // marginalization and the covariance.
   std::optional<LinearizedOldest> oldest;
   const auto marg_start = std::chrono::steady_clock::now();
-  if (full && keyframe && !PointsOn()) oldest.emplace(*this);
+  if (full && keyframe) {
+    if (PointsOn()) MakePointsOfOldest();
+    oldest.emplace(*this);
+  }
   timing_.marginalize_s += SecondsSince(marg_start);
   newest_pose_covariance_.reset();
   if (options_.pose_covariance &&
@@ -219,14 +222,10 @@ void Estimator::CovarianceAndSlide(int64_t t_ns, bool keyframe, bool full) {
   }
   if (full) {
     const auto slide_start = std::chrono::steady_clock::now();
-    if (oldest) {
+    if (oldest)
       MarginalizeOldest(&*oldest);
-    } else if (keyframe) {
-      KeepPriorsOfOldestWithPoints();
-      MarginalizeOldest(/*linearized=*/nullptr);
-    } else {
+    else
       MarginalizeSecondNewest(/*with_prior=*/true);
-    }
     DropLostPoints();
     timing_.marginalize_s += SecondsSince(slide_start);
     ++timing_.marginalizations;

@@ -183,8 +183,8 @@ class Estimator {
     OldestFrameTerms terms;
     OldestFrameMarginalization marginalization;  // over terms.frame
   };
-  // Drops the oldest frame; with `linearized`, its terms go into the priors (without: no prior, or the
-  // priors were kept by KeepPriorsOfOldestWithPoints).
+  // Drops the oldest frame; with `linearized` (else without a prior), its terms go into the priors, and the
+  // lost points leave with it.
   void MarginalizeOldest(const LinearizedOldest* linearized);
   void MarginalizeSecondNewest(bool with_prior);
   // A marginalization of the window: the prior it leaves from `previous` (may be null), in `form`; false
@@ -205,17 +205,20 @@ class Estimator {
   // or in frame `frame_id` alone when it is given; `costs` owns them.
   void AppendPointTerms(std::vector<std::unique_ptr<ceres::CostFunction>>* costs,
                         std::vector<MarginalizationTerm>* terms, std::optional<uint64_t> frame_id = {});
-  // The tracks anchored in the oldest frame that qualify (point_min_observations, point_min_baseline_ratio)
-  // become points, at their current depth.
+  // Before the oldest frame's marginalization: the tracks anchored in it that qualify
+  // (point_min_observations, point_min_baseline_ratio) become points, at their current depth.
   void MakePointsOfOldest();
   // Each point's track takes the depth of its point in its anchor frame (outlier tests and re-anchoring
   // read it).
   void SyncPointDepths();
-  // The points whose tracks ended leave both priors (marginalized) and the window.
+  // Whether point `id`'s track ended; the lost points (their blocks). A lost point has no factors: only the
+  // priors hold it until it is eliminated.
+  bool PointIsLost(int id) const;
+  std::vector<const double*> LostPoints() const;
+  void ErasePoints(const std::vector<const double*>& points);
+  // The lost points that cannot wait for the next keyframe's marginalization (one of the priors lacks them)
+  // leave both priors now, and the window.
   void DropLostPoints();
-  // Before MarginalizeOldest(nullptr) with points: the qualifying tracks become points, and the oldest
-  // frame's terms (its observations of points included) go into both priors by the general elimination.
-  void KeepPriorsOfOldestWithPoints();
   // The newest pose's covariance from the window's information (estimator_covariance.cc). `oldest` (may be
   // null): the information of the terms over the oldest frame, already linearized at the current estimate
   // (LinearizedOldest), which the covariance then adds instead of linearizing them again.

@@ -59,6 +59,11 @@ Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
       {factor.get(), nullptr, {oldest.pose, oldest.speed_bias, second.pose, second.speed_bias}});
   out.costs.push_back(std::move(factor));
   AppendOldestZeroVelocityTerms(&out.costs, &frame.factors);
+  if (PointsOn()) {
+    frame.points = PointBlocks();
+    frame.dropped_points = LostPoints();
+    AppendPointTerms(&out.costs, &frame.factors, oldest.id);
+  }
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
     if (!features_.Usable(track) || track.anchor_frame() != oldest.id || IsPoint(id)) continue;
@@ -89,6 +94,7 @@ void Estimator::MarginalizeOldest(const LinearizedOldest* linearized) {
   }
   bias_prior_.reset();  // the oldest frame's bias prior is now part of prior_
   for (const int id : restarted) features_.EraseTrack(id);
+  if (linearized) ErasePoints(linearized->terms.frame.dropped_points);
   features_.RemoveFrame(oldest.id, CameraPoses());
   window_.pop_front();
   window_.front()->imu_from_prev.reset();  // the oldest frame has no IMU factor

@@ -4,7 +4,8 @@
 // point_min_baseline_ratio of its depth, becomes a point p_W. Its observation in the leaving frame goes into
 // the priors with the point kept; its later observations are PointReprojectionFactors on (pose, point), so
 // each observation counts once, and the prior ties the window to the track's past for as long as it is
-// seen. A point leaves the priors (marginalized) when its track ends. The other tracks re-anchor (VINS-Mono).
+// seen. A point leaves the priors (marginalized) when its track ends: with the next keyframe's oldest frame,
+// when both priors hold it. The other tracks re-anchor (VINS-Mono).
 #include <algorithm>
 #include <iterator>
 #include <memory>
@@ -26,6 +27,7 @@ void Estimator::AppendPointTerms(std::vector<std::unique_ptr<ceres::CostFunction
                                  std::vector<MarginalizationTerm>* terms, std::optional<uint64_t> frame_id) {
   const double sqrt_information = camera_.fx / options_.features.pixel_std_px;
   for (auto& [id, p_W] : points_W_) {
+    if (PointIsLost(id)) continue;
     const FeatureTrack& track = features_.tracks().at(id);
     for (const auto& [frame, n] : track.observations) {
       if (frame_id && frame != *frame_id) continue;
@@ -55,7 +57,7 @@ void Estimator::MakePointsOfOldest() {
 
 void Estimator::SyncPointDepths() {
   for (const auto& [id, p_W] : points_W_) {
-    auto it = features_.tracks().find(id);
+    const auto it = features_.tracks().find(id);
     if (it == features_.tracks().end()) continue;
     const Eigen::Vector3d p_C =
         T_WC(FrameById(it->second.anchor_frame())).inverse() * Eigen::Vector3d(p_W[0], p_W[1], p_W[2]);
@@ -63,41 +65,44 @@ void Estimator::SyncPointDepths() {
   }
 }
 
-void Estimator::DropLostPoints() {
-  DroppedBlocks lost;
+bool Estimator::PointIsLost(int id) const { return features_.tracks().count(id) == 0; }
+
+std::vector<const double*> Estimator::LostPoints() const {
+  std::vector<const double*> lost;
   for (const auto& [id, p_W] : points_W_)
-    if (features_.tracks().count(id) == 0) lost.push_back(p_W.data());
-  if (lost.empty()) return;
-  // All of them in one elimination per prior: each prior is factorized once.
-  const auto involves_lost = [&](const LinearPrior& prior) {
-    return std::any_of(lost.begin(), lost.end(), [&](const double* p) { return prior.Involves(p); });
-  };
-  const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
-    SchurComplement schur;
-    const double threshold = options_.window.marginalization_eigen_threshold;
-    return EliminateDropped(previous, {}, lost, threshold, &schur) &&
-           PriorOfSchurComplement(std::move(schur), threshold, form, prior);
-  };
-  if (prior_ && involves_lost(*prior_)) KeepPrior(update);
-  if (anchored_prior_ && involves_lost(*anchored_prior_)) KeepAnchoredPrior(update);
-  for (auto it = points_W_.begin(); it != points_W_.end();)
-    it = features_.tracks().count(it->first) == 0 ? points_W_.erase(it) : std::next(it);
+    if (PointIsLost(id)) lost.push_back(p_W.data());
+  return lost;
 }
 
-void Estimator::KeepPriorsOfOldestWithPoints() {
-  MakePointsOfOldest();
-  OldestFrameTerms oldest_terms = TermsOfOldest();  // the tracks anchored there that stay tracks
-  std::vector<MarginalizationTerm> terms = GeneralTerms(oldest_terms.frame);
-  const DroppedBlocks dropped = GeneralDroppedBlocks(oldest_terms.frame);
-  AppendPointTerms(&oldest_terms.costs, &terms, window_.front()->id);
+void Estimator::ErasePoints(const std::vector<const double*>& points) {
+  for (auto it = points_W_.begin(); it != points_W_.end();)
+    it = std::find(points.begin(), points.end(), it->second.data()) != points.end() ? points_W_.erase(it)
+                                                                                    : std::next(it);
+}
+
+void Estimator::DropLostPoints() {
+  // A lost point both priors hold waits for the next keyframe, whose marginalization eliminates it with the
+  // oldest frame (one factorization of each prior); the others leave both priors now, all in one elimination.
+  const auto holds = [](const std::shared_ptr<LinearPrior>& prior, const double* point) {
+    return prior && prior->Involves(point);
+  };
+  std::vector<const double*> now;
+  for (const double* point : LostPoints())
+    if (!holds(prior_, point) || (options_.pose_covariance && !holds(anchored_prior_, point)))
+      now.push_back(point);
+  if (now.empty()) return;
+  const auto involves = [&](const std::shared_ptr<LinearPrior>& prior) {
+    return std::any_of(now.begin(), now.end(), [&](const double* point) { return holds(prior, point); });
+  };
   const PriorUpdate update = [&](const LinearPrior* previous, PriorForm form, LinearPrior* prior) {
     SchurComplement schur;
     const double threshold = options_.window.marginalization_eigen_threshold;
-    return EliminateDropped(previous, terms, dropped, threshold, &schur) &&
+    return EliminateDropped(previous, {}, now, threshold, &schur) &&
            PriorOfSchurComplement(std::move(schur), threshold, form, prior);
   };
-  KeepPrior(update);
-  if (options_.pose_covariance) KeepAnchoredPrior(update);
+  if (involves(prior_)) KeepPrior(update);
+  if (involves(anchored_prior_)) KeepAnchoredPrior(update);
+  ErasePoints(now);
 }
 
 }  // namespace vigil::estimator

@@ -9,11 +9,14 @@ namespace vigil::estimator {
 namespace {
 
 // The kept blocks in EliminateDropped's order: the previous prior's, then the terms' in order of appearance,
-// each once, without the oldest frame's.
+// each once, without the oldest frame's and the dropped points.
 std::vector<double*> KeptBlocks(const LinearPrior* previous, const OldestFrame& oldest) {
   std::vector<double*> kept;
   auto keep = [&](double* block) {
     if (block == oldest.poses.front() || block == oldest.speed_biases.front()) return;
+    if (std::find(oldest.dropped_points.begin(), oldest.dropped_points.end(), block) !=
+        oldest.dropped_points.end())
+      return;
     if (std::find(kept.begin(), kept.end(), block) == kept.end()) kept.push_back(block);
   };
   if (previous != nullptr)
@@ -37,7 +40,9 @@ LinearPrior::Block PriorBlock(double* block, int tangent) {
 }  // namespace
 
 OldestFrameMarginalization::OldestFrameMarginalization(const OldestFrame& oldest, double eigen_threshold)
-    : oldest_(oldest), eigen_threshold_(eigen_threshold), information_(oldest.poses, oldest.speed_biases) {
+    : oldest_(oldest),
+      eigen_threshold_(eigen_threshold),
+      information_(oldest.poses, oldest.speed_biases, oldest.points) {
   if (oldest.poses.empty() || oldest.poses.size() != oldest.speed_biases.size()) return;
   for (const MarginalizationTerm& term : oldest.factors)
     if (!information_.AddTerm(term)) return;
@@ -51,14 +56,21 @@ OldestFrameMarginalization::OldestFrameMarginalization(const OldestFrame& oldest
 bool OldestFrameMarginalization::Prior(const LinearPrior* previous, PriorForm form,
                                        LinearPrior* prior) const {
   if (!linearized_) return false;
-  // The oldest frame's columns first (its pose and speed-bias: window columns 0-14), then the kept blocks'.
-  constexpr int kDropped = WindowInformation::kFrameSize;
-  std::vector<int> columns(kDropped);
-  for (int i = 0; i < kDropped; ++i) columns[i] = i;
-  // Where each block's columns start among `columns`: the oldest frame's, then each kept block's.
+  // The dropped columns first (the oldest frame's pose and speed-bias: window columns 0-14, then the dropped
+  // points'), then the kept blocks'.
+  std::vector<int> columns(WindowInformation::kFrameSize);
+  for (int i = 0; i < WindowInformation::kFrameSize; ++i) columns[i] = i;
+  // Where each block's columns start among `columns`: the dropped ones', then each kept block's.
   std::vector<std::pair<const double*, int>> first_column = {
       {oldest_.poses.front(), WindowInformation::PoseColumn(0)},
       {oldest_.speed_biases.front(), WindowInformation::SpeedBiasColumn(0)}};
+  for (const double* point : oldest_.dropped_points) {
+    const WindowInformation::BlockColumn window = information_.ColumnOf(point);
+    if (window.column < 0) return false;
+    first_column.emplace_back(point, static_cast<int>(columns.size()));
+    for (int i = 0; i < window.tangent; ++i) columns.push_back(window.column + i);
+  }
+  const int dropped = static_cast<int>(columns.size());
   SchurComplement schur;
   for (double* block : KeptBlocks(previous, oldest_)) {
     const WindowInformation::BlockColumn window = information_.ColumnOf(block);
@@ -85,7 +97,7 @@ bool OldestFrameMarginalization::Prior(const LinearPrior* previous, PriorForm fo
     H(at, at) += H_prior;
     g(at) += g_prior;
   }
-  EliminateLeading(&H, &g, kDropped, eigen_threshold_, &schur.H, &schur.g);
+  EliminateLeading(&H, &g, dropped, eigen_threshold_, &schur.H, &schur.g);
   if (!schur.H.allFinite() || !schur.g.allFinite()) return false;
   return PriorOfSchurComplement(std::move(schur), eigen_threshold_, form, prior);
 }
@@ -105,6 +117,7 @@ std::vector<MarginalizationTerm> GeneralTerms(const OldestFrame& oldest) {
 
 DroppedBlocks GeneralDroppedBlocks(const OldestFrame& oldest) {
   DroppedBlocks dropped = {oldest.poses.front(), oldest.speed_biases.front()};
+  dropped.insert(dropped.end(), oldest.dropped_points.begin(), oldest.dropped_points.end());
   for (const auto& track : oldest.tracks)
     if (!track.empty()) dropped.push_back(track.front().blocks[2]);
   return dropped;

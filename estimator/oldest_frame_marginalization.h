@@ -24,7 +24,12 @@ struct OldestFrame {
   // The window's frames' blocks, the oldest (the one that leaves) first.
   std::vector<double*> poses;
   std::vector<double*> speed_biases;
-  // The factors other than reprojections that involve the oldest frame, over window blocks.
+  // The window's landmark points (window.oldest_tracks points; WindowInformation's layout), and those among
+  // them that leave with the oldest frame (their tracks ended: only the prior holds them).
+  std::vector<double*> points;
+  std::vector<const double*> dropped_points;
+  // The factors other than reprojections that involve the oldest frame, over window blocks (its
+  // observations of points included).
   std::vector<MarginalizationTerm> factors;
   // The tracks anchored in the oldest frame: each one's reprojections, all over its inverse depth.
   std::vector<std::vector<WindowInformation::Reprojection>> tracks;
@@ -57,7 +62,7 @@ bool MarginalizeOldestFrame(const LinearPrior* previous, const OldestFrame& olde
                             PriorForm form, LinearPrior* prior);
 
 // The same marginalization for EliminateDropped: the factors, then every reprojection with the loss; the
-// oldest frame's blocks and the tracks' depths.
+// oldest frame's blocks, the dropped points and the tracks' depths.
 std::vector<MarginalizationTerm> GeneralTerms(const OldestFrame& oldest);
 DroppedBlocks GeneralDroppedBlocks(const OldestFrame& oldest);
 
