@@ -117,6 +117,8 @@ BENCHMARK_CAPTURE(BM_Marginalize, semireal_points_general, kSemiRealPoints, true
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_points, kSemiRealPoints, true)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CovarianceAndMarginalize, semireal_points_unshared, kSemiRealPoints, false)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace vigil::estimator
