@@ -1,6 +1,7 @@
 #include "estimator/reprojection_factor.h"
 
 #include "core/so3.h"
+#include "estimator/camera_observation.h"
 
 namespace vigil::estimator {
 
@@ -25,35 +26,21 @@ bool ReprojectionFactor::Evaluate(double const* const* parameters, double* resid
 
   const Vector3d p_Bi = R_BC_ * (n_i_ * inv_rho) + p_BC_;
   const Vector3d p_W = R_i * p_Bi + p_i;
-  const Vector3d p_Bj = R_j.transpose() * (p_W - p_j);
-  const Vector3d p_Cj = R_BC_.transpose() * (p_Bj - p_BC_);
-  const double inv_z = 1.0 / p_Cj.z();
-
-  const Eigen::Vector2d u = p_Cj.head<2>() * inv_z;  // the projection
+  const CameraObservation observation(p_W, p_j, R_j, R_BC_, p_BC_);
   Eigen::Map<Eigen::Vector2d> r(residuals);
-  r = sqrt_information_ * (u - n_j_);
+  r = observation.Residual(n_j_, sqrt_information_);
   if (jacobians == nullptr) return true;
 
-  // Chain rule from the residual back through p_Cj = R_CB (R_j^T (p_W - p_j) - p_BC): d r / d p_Cj =
-  // sqrt_info / z [I2, -u], so d r / d p_Bj = sqrt_info / z (rows 0, 1 of R_CB - u row 2 of R_CB).
-  const auto R_CB = R_BC_.transpose();
-  const Eigen::Matrix<double, 2, 3> d_r_d_pBj =
-      (sqrt_information_ * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
+  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = observation.ResidualByBodyPoint(R_BC_, sqrt_information_);
   const Eigen::Matrix<double, 2, 3> d_r_d_pW = d_r_d_pBj * R_j.transpose();
   const Eigen::Matrix<double, 2, 3> d_r_d_pBi = d_r_d_pW * R_i;
-  using RowMajor2x7 = Eigen::Matrix<double, 2, 7, Eigen::RowMajor>;
   if (jacobians[0] != nullptr) {
-    Eigen::Map<RowMajor2x7> jac(jacobians[0]);
+    Eigen::Map<Eigen::Matrix<double, 2, kPoseSize, Eigen::RowMajor>> jac(jacobians[0]);
     jac.leftCols<3>() = d_r_d_pW;
     jac.middleCols<3>(3) = -d_r_d_pBi * Skew(p_Bi);
     jac.col(6).setZero();
   }
-  if (jacobians[1] != nullptr) {
-    Eigen::Map<RowMajor2x7> jac(jacobians[1]);
-    jac.leftCols<3>() = -d_r_d_pW;
-    jac.middleCols<3>(3) = d_r_d_pBj * Skew(p_Bj);
-    jac.col(6).setZero();
-  }
+  if (jacobians[1] != nullptr) observation.ObservingPoseJacobian(d_r_d_pBj, d_r_d_pW, jacobians[1]);
   if (jacobians[2] != nullptr) {
     // d p_Bi / d rho = -R_BC n_i / rho^2.
     Eigen::Map<Eigen::Vector2d> jac(jacobians[2]);
