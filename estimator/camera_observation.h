@@ -26,7 +26,8 @@ struct CameraObservation {
   }
   // d r / d p_B. Chain rule through p_C = R_CB (p_B - p_BC): d r / d p_C = sqrt_info / z [I2, -u], so
   // d r / d p_B = sqrt_info / z (rows 0, 1 of R_CB - u row 2 of R_CB).
-  Eigen::Matrix<double, 2, 3> ResidualByBodyPoint(const Eigen::Matrix3d& R_BC, double sqrt_information) const {
+  Eigen::Matrix<double, 2, 3> ResidualByBodyPoint(const Eigen::Matrix3d& R_BC,
+                                                  double sqrt_information) const {
     const auto R_CB = R_BC.transpose();
     return (sqrt_information * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
   }
