@@ -29,6 +29,7 @@ class EstimatorStages {
   }
 
   int window_frames() const { return static_cast<int>(e_.window_.size()); }
+  int64_t oldest_frame_ns() const { return e_.window_.front()->t_ns; }
   int usable_tracks() const {
     int n = 0;
     for (const auto& [id, track] : e_.features_.tracks()) n += e_.features_.Usable(track);

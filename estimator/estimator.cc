@@ -278,6 +278,7 @@ bool Estimator::TryInitialize() {
   initialized_ = true;
   holding_still_ = result.stationary;
   if (!initialized_at_ns_) initialized_at_ns_ = window_.back()->t_ns;
+  points_from_ns_ = window_.back()->t_ns + SToNs(options_.window.point_settle_s);
   return true;
 }
 
@@ -320,6 +321,7 @@ void Estimator::Reset() {
   anchored_prior_.reset();
   bias_prior_.reset();
   points_W_.clear();
+  points_from_ns_.reset();
   initialized_ = false;
   holding_still_ = false;
   lost_frames_ = 0;

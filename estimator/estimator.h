@@ -278,6 +278,8 @@ class Estimator {
   std::optional<Matrix6d> newest_pose_covariance_;
   // window.oldest_tracks points: each point p_W by its track's id (stable addresses: a std::map).
   std::map<int, std::array<double, 3>> points_W_;
+  // The first frame time whose tracks may become points (point_settle_s after the last initialization).
+  std::optional<int64_t> points_from_ns_;
   std::optional<int64_t> last_covariance_ns_;  // the newest frame a covariance was computed at
 };
 

@@ -74,6 +74,7 @@ struct WindowOptions {
   // With oldest_tracks `points`: which tracks anchored in the leaving frame become points.
   int point_min_observations = 10;        // observations in the window, the anchor's included
   double point_min_baseline_ratio = 0.3;  // distance of the anchor's camera to the last one, over the depth
+  double point_settle_s = 6.0;            // no points from frames earlier than this after an initialization
 
   template <class V>
   void Visit(V& v) {
@@ -116,6 +117,12 @@ struct WindowOptions {
             "with oldest_tracks points: ... and when its anchor's camera and its last one are apart by at "
             "least this fraction of its depth",
             Bounds::NonNegative());
+    v.Field(
+        "point_settle_s", point_settle_s,
+        "with oldest_tracks points: no track anchored in a frame earlier than this after an initialization "
+        "becomes a point (the first windows carry the initialization's errors, and points would hold them) "
+        "[s]",
+        Bounds::NonNegative());
   }
 };
 

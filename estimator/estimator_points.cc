@@ -1,6 +1,7 @@
 // window.oldest_tracks points: the long tracks kept as landmark points in W (OKVIS's design, the fourteenth
-// round of docs/results/2026-12-estimator-speed.md). When the oldest frame leaves, each usable track anchored
-// in it with point_min_observations observations, whose anchor camera and last camera are apart by
+// and fifteenth rounds of docs/results/2026-12-estimator-speed.md). When the oldest frame leaves,
+// point_settle_s or more after the initialization, each usable track anchored in it with
+// point_min_observations observations, whose anchor camera and last camera are apart by
 // point_min_baseline_ratio of its depth, becomes a point p_W. Its observation in the leaving frame goes into
 // the priors with the point kept; its later observations are PointReprojectionFactors on (pose, point), so
 // each observation counts once, and the prior ties the window to the track's past for as long as it is
@@ -40,6 +41,7 @@ void Estimator::AppendPointTerms(std::vector<std::unique_ptr<ceres::CostFunction
 
 void Estimator::MakePointsOfOldest() {
   const Frame& oldest = *window_.front();
+  if (!points_from_ns_ || oldest.t_ns < *points_from_ns_) return;
   const Eigen::Isometry3d T_WC_anchor = T_WC(oldest);
   const WindowOptions& o = options_.window;
   for (auto& [id, track] : features_.tracks()) {
