@@ -75,6 +75,7 @@ struct WindowOptions {
   int point_min_observations = 10;        // observations in the window, the anchor's included
   double point_min_baseline_ratio = 0.3;  // distance of the anchor's camera to the last one, over the depth
   double point_settle_s = 6.0;            // no points from frames earlier than this after an initialization
+  int point_max = 0;                      // live points at most (the first made are kept); 0: no cap
 
   template <class V>
   void Visit(V& v) {
@@ -123,6 +124,10 @@ struct WindowOptions {
         "becomes a point (the first windows carry the initialization's errors, and points would hold them) "
         "[s]",
         Bounds::NonNegative());
+    v.Field("point_max", point_max,
+            "with oldest_tracks points: at most this many live points, 0 for no cap; a track qualifies only "
+            "while fewer are live (each point adds 3 dimensions to the dense blocks the window factorizes)",
+            Bounds::NonNegative());
   }
 };
 

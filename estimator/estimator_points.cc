@@ -2,11 +2,12 @@
 // and fifteenth rounds of docs/results/2026-12-estimator-speed.md). When the oldest frame leaves,
 // point_settle_s or more after the initialization, each usable track anchored in it with
 // point_min_observations observations, whose anchor camera and last camera are apart by
-// point_min_baseline_ratio of its depth, becomes a point p_W. Its observation in the leaving frame goes into
-// the priors with the point kept; its later observations are PointReprojectionFactors on (pose, point), so
-// each observation counts once, and the prior ties the window to the track's past for as long as it is
-// seen. A point leaves the priors (marginalized) when its track ends: with the next keyframe's oldest frame,
-// when both priors hold it. The other tracks re-anchor (VINS-Mono).
+// point_min_baseline_ratio of its depth, becomes a point p_W, while fewer than point_max (if set) are live.
+// Its observation in the leaving frame goes into the priors with the point kept; its later observations are
+// PointReprojectionFactors on (pose, point), so each observation counts once, and the prior ties the window
+// to the track's past for as long as it is seen. A point leaves the priors (marginalized) when its track
+// ends: with the next keyframe's oldest frame, when both priors hold it. The other tracks re-anchor
+// (VINS-Mono).
 #include <algorithm>
 #include <iterator>
 #include <memory>
@@ -45,6 +46,7 @@ void Estimator::MakePointsOfOldest() {
   const Eigen::Isometry3d T_WC_anchor = T_WC(oldest);
   const WindowOptions& o = options_.window;
   for (auto& [id, track] : features_.tracks()) {
+    if (o.point_max > 0 && static_cast<int>(points_W_.size()) >= o.point_max) return;
     if (IsPoint(id) || !features_.Usable(track) || track.anchor_frame() != oldest.id ||
         static_cast<int>(track.observations.size()) < o.point_min_observations)
       continue;

@@ -16,11 +16,13 @@
 namespace vigil::estimator {
 namespace {
 
-// Points from the first frame that leaves the window on (point_settle_s 0).
-EstimatorOptions WithPoints(double settle_s = 0.0) {
+// Points from the first frame that leaves the window after initialization on (point_settle_s 0), at most
+// `max_points` of them (0: no cap).
+EstimatorOptions WithPoints(double settle_s = 0.0, int max_points = 0) {
   EstimatorOptions options;
   options.window.oldest_tracks = OldestTracks::kPoints;
   options.window.point_settle_s = settle_s;
+  options.window.point_max = max_points;
   return options;
 }
 
@@ -45,10 +47,11 @@ TEST(LandmarkPoints, NoneBeforeTheEstimatorSettled) {
   }
 }
 
+// At most point_max of them live at once, each while its track does; the priors hold only live blocks.
 TEST(LandmarkPoints, LiveWhileTheirTracksAreAndThePriorsHoldOnlyLiveBlocks) {
   const auto [data, input] = testing::SimulatePaperRun(8.0, 2);
   int frames_with_points = 0, most_points = 0;
-  const EstimatorResult result = RunEstimator(WithPoints(), input, [&](Estimator& estimator) {
+  const EstimatorResult result = RunEstimator(WithPoints(0.0, 12), input, [&](Estimator& estimator) {
     const EstimatorStages stages(&estimator);
     EXPECT_TRUE(stages.PointsAndPriorsAreLive());
     frames_with_points += stages.points() > 0;
@@ -57,7 +60,7 @@ TEST(LandmarkPoints, LiveWhileTheirTracksAreAndThePriorsHoldOnlyLiveBlocks) {
   });
   ASSERT_TRUE(result.ok) << result.failure_reason;
   EXPECT_GT(frames_with_points, 15);
-  EXPECT_GT(most_points, 10);
+  EXPECT_EQ(most_points, 12);  // window.point_max
   // Every solved pose has a covariance at the default rate, the points' information included.
   int covariances = 0;
   for (const Matrix6d& P : result.pose_covariances) covariances += P.allFinite();
