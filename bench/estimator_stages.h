@@ -53,8 +53,8 @@ class EstimatorStages {
     return true;
   }
   // The points as saved (Solve starts from them), and their current values, by track id.
-  const std::map<int, std::array<double, 3>>& saved_points_W() const { return points_W_; }
-  const std::map<int, std::array<double, 3>>& points_W() const { return e_.points_W_; }
+  const std::map<int, std::array<double, kPointSize>>& saved_points_W() const { return points_W_; }
+  const std::map<int, std::array<double, kPointSize>>& points_W() const { return e_.points_W_; }
   // The newest frame's pose block (kPoseSize doubles).
   std::array<double, kPoseSize> NewestPose() const {
     std::array<double, kPoseSize> pose;
@@ -116,7 +116,7 @@ class EstimatorStages {
   std::vector<std::array<double, kPoseSize>> poses_;
   std::vector<std::array<double, kSpeedBiasSize>> speed_biases_;
   std::map<int, std::pair<double, bool>> depths_;
-  std::map<int, std::array<double, 3>> points_W_;
+  std::map<int, std::array<double, kPointSize>> points_W_;
 };
 
 }  // namespace vigil::estimator

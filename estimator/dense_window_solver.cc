@@ -40,7 +40,7 @@ class Snapshot {
     values_.clear();
     for (const double* pose : p_.poses) values_.insert(values_.end(), pose, pose + kPoseSize);
     for (const double* sb : p_.speed_biases) values_.insert(values_.end(), sb, sb + kSpeedBiasSize);
-    for (const double* point : p_.points) values_.insert(values_.end(), point, point + 3);
+    for (const double* point : p_.points) values_.insert(values_.end(), point, point + kPointSize);
     for (const auto& track : p_.tracks) values_.push_back(*track.inv_depth);
   }
   void Restore() const {
@@ -54,8 +54,8 @@ class Snapshot {
       v += kSpeedBiasSize;
     }
     for (double* point : p_.points) {
-      std::copy_n(v, 3, point);
-      v += 3;
+      std::copy_n(v, kPointSize, point);
+      v += kPointSize;
     }
     for (const auto& track : p_.tracks) *track.inv_depth = *v++;
   }
@@ -182,9 +182,10 @@ bool ApplyStep(const DenseWindowProblem& p, const Eigen::VectorXd& dx, const std
     Eigen::Map<Eigen::Matrix<double, kSpeedBiasSize, 1>>(p.speed_biases[k]) +=
         dx.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(static_cast<int>(k)));
   }
-  const int first_point = WindowInformation::kFrameSize * static_cast<int>(p.poses.size());
+  const int frames = static_cast<int>(p.poses.size());
   for (std::size_t j = 0; j < p.points.size(); ++j)
-    Eigen::Map<Eigen::Vector3d>(p.points[j]) += dx.segment<3>(first_point + 3 * static_cast<int>(j));
+    Eigen::Map<Eigen::Matrix<double, kPointSize, 1>>(p.points[j]) +=
+        dx.segment<kPointSize>(WindowInformation::PointColumn(frames, static_cast<int>(j)));
   for (std::size_t i = 0; i < p.tracks.size(); ++i) *p.tracks[i].inv_depth += depth_steps[i];
   return true;
 }

@@ -199,6 +199,10 @@ class Estimator {
   // window.oldest_tracks points (estimator_points.cc): the long tracks kept as landmark points in W.
   bool PointsOn() const { return options_.window.oldest_tracks == OldestTracks::kPoints; }
   bool IsPoint(int id) const { return points_W_.count(id) > 0; }
+  // Whether track `id` enters the window by its inverse depth (usable, and not a point).
+  bool IsDepthTrack(int id, const FeatureTrack& track) const {
+    return features_.Usable(track) && !IsPoint(id);
+  }
   // The points' blocks, in the order of their track ids.
   std::vector<double*> PointBlocks();
   // One PointReprojectionFactor (with the robust loss) per observation of each point in the window frames,
@@ -277,7 +281,7 @@ class Estimator {
   GatingStats gating_;
   std::optional<Matrix6d> newest_pose_covariance_;
   // window.oldest_tracks points: each point p_W by its track's id (stable addresses: a std::map).
-  std::map<int, std::array<double, 3>> points_W_;
+  std::map<int, std::array<double, kPointSize>> points_W_;
   // The first frame time whose tracks may become points (point_settle_s after the last initialization).
   std::optional<int64_t> points_from_ns_;
   std::optional<int64_t> last_covariance_ns_;  // the newest frame a covariance was computed at

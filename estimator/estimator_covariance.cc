@@ -53,9 +53,7 @@ std::optional<Matrix6d> Estimator::NewestPoseCovariance(const WindowInformation*
   std::vector<ReprojectionTerm> reprojections;
   std::vector<WindowInformation::Reprojection> track_terms;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track) || IsPoint(id) ||
-        (oldest != nullptr && track.anchor_frame() == oldest_frame.id))
-      continue;
+    if (!IsDepthTrack(id, track) || (oldest != nullptr && track.anchor_frame() == oldest_frame.id)) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     track_terms.clear();

@@ -66,7 +66,7 @@ Estimator::OldestFrameTerms Estimator::TermsOfOldest() {
   }
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track) || track.anchor_frame() != oldest.id || IsPoint(id)) continue;
+    if (!IsDepthTrack(id, track) || track.anchor_frame() != oldest.id) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     std::vector<WindowInformation::Reprojection>& terms = frame.tracks.emplace_back();

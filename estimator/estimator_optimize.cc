@@ -162,7 +162,7 @@ void Estimator::RepropagateImuFactors() {
 Estimator::Elimination Estimator::PlanElimination() {
   Elimination e;
   for (auto& [id, track] : features_.tracks())
-    if (features_.Usable(track) && !IsPoint(id)) e.tracks.emplace_back(id, &track);
+    if (IsDepthTrack(id, track)) e.tracks.emplace_back(id, &track);
   e.speed_bias.resize(window_.size());
   e.size = e.tracks.size();
   for (std::size_t k = 0; k < window_.size(); ++k) {

@@ -29,7 +29,7 @@ bool Estimator::OptimizeDense(bool marginalize_oldest_next, std::string* reason)
   AppendPointTerms(&costs, &problem.factors);
   std::vector<ReprojectionTerm> reprojections;
   for (auto& [id, track] : features_.tracks()) {
-    if (!features_.Usable(track) || IsPoint(id)) continue;
+    if (!IsDepthTrack(id, track)) continue;
     reprojections.clear();
     AppendReprojectionTerms(id, track, &track.inv_depth, &reprojections);
     DenseWindowProblem::Track& t = problem.tracks.emplace_back();

@@ -47,7 +47,7 @@ void Estimator::MakePointsOfOldest() {
   const WindowOptions& o = options_.window;
   for (auto& [id, track] : features_.tracks()) {
     if (o.point_max > 0 && static_cast<int>(points_W_.size()) >= o.point_max) return;
-    if (IsPoint(id) || !features_.Usable(track) || track.anchor_frame() != oldest.id ||
+    if (!IsDepthTrack(id, track) || track.anchor_frame() != oldest.id ||
         static_cast<int>(track.observations.size()) < o.point_min_observations)
       continue;
     const Eigen::Vector3d c_last_W = T_WC(FrameById(track.observations.back().first)).translation();

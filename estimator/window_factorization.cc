@@ -27,11 +27,12 @@ Eigen::Matrix<double, U, V> LowerBlock(const Eigen::MatrixXd& A, int row_u, int 
   return A.block<V, U>(column_v, row_u).transpose();
 }
 
-// dst = LowerBlock(A, row_u, column_v) of sizes U x size_v, size_v 3 (a point) or 6 (a pose).
+// dst = LowerBlock(A, row_u, column_v) of sizes U x size_v, size_v kPointSize (a point) or kPoseTangentSize
+// (a pose).
 template <int U, class Destination>
 void CopyLowerBlock(const Eigen::MatrixXd& A, int row_u, int column_v, int size_v, Destination&& dst) {
-  if (size_v == 3)
-    dst = LowerBlock<U, 3>(A, row_u, column_v);
+  if (size_v == kPointSize)
+    dst = LowerBlock<U, kPointSize>(A, row_u, column_v);
   else
     dst = LowerBlock<U, kPoseTangentSize>(A, row_u, column_v);
 }
@@ -39,10 +40,10 @@ void CopyLowerBlock(const Eigen::MatrixXd& A, int row_u, int column_v, int size_
 }  // namespace
 
 bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
-  frames_ = (static_cast<int>(A.rows()) - 3 * points) / WindowInformation::kFrameSize;
+  frames_ = (static_cast<int>(A.rows()) - kPointSize * points) / WindowInformation::kFrameSize;
   const int n = frames_;
-  chain_ = A.rows() == A.cols() && A.rows() == WindowInformation::kFrameSize * n + 3 * points &&
-           IsSpeedBiasChain(A, n);
+  chain_ =
+      A.rows() == A.cols() && A.rows() == WindowInformation::PointColumn(n, points) && IsSpeedBiasChain(A, n);
   if (!chain_) {
     dense_.compute(A);
     return dense_.info() == Eigen::Success;
@@ -50,11 +51,11 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
   // The Schur complement's blocks: the points, then the poses, the newest last.
   schur_blocks_.clear();
   for (int j = 0; j < points; ++j)
-    schur_blocks_.push_back({WindowInformation::kFrameSize * n + 3 * j, 3 * j, 3});
+    schur_blocks_.push_back({WindowInformation::PointColumn(n, j), kPointSize * j, kPointSize});
   for (int i = 0; i < n; ++i)
     schur_blocks_.push_back(
-        {WindowInformation::PoseColumn(i), 3 * points + kPoseTangentSize * i, kPoseTangentSize});
-  const int schur_columns = 3 * points + kPoseTangentSize * n;
+        {WindowInformation::PoseColumn(i), kPointSize * points + kPoseTangentSize * i, kPoseTangentSize});
+  const int schur_columns = kPointSize * points + kPoseTangentSize * n;
   // Its lower triangle, as A holds it.
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(schur_columns, schur_columns);
   for (std::size_t v = 0; v < schur_blocks_.size(); ++v)
@@ -62,8 +63,8 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
       const SchurBlock& bu = schur_blocks_[u];
       const SchurBlock& bv = schur_blocks_[v];
       auto block = S.block(bu.s, bv.s, bu.size, bv.size);
-      if (bu.size == 3)
-        CopyLowerBlock<3>(A, bu.a, bv.a, bv.size, block);
+      if (bu.size == kPointSize)
+        CopyLowerBlock<kPointSize>(A, bu.a, bv.a, bv.size, block);
       else
         CopyLowerBlock<kPoseTangentSize>(A, bu.a, bv.a, bv.size, block);
     }

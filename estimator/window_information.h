@@ -34,7 +34,8 @@ class WindowInformation {
   // landmark points in W, window.oldest_tracks points) follow the frames, point j at PointColumn(j).
   WindowInformation(std::vector<double*> pose_blocks, std::vector<double*> speed_bias_blocks,
                     std::vector<double*> point_blocks = {});
-  int PointColumn(int point) const { return kFrameSize * frames() + kPointSize * point; }
+  static constexpr int PointColumn(int frames, int point) { return kFrameSize * frames + kPointSize * point; }
+  int PointColumn(int point) const { return PointColumn(frames(), point); }
 
   // Adds a factor over window blocks (each one of the frames' pose or speed-bias blocks), evaluated at their
   // current values with `loss` (may be null) applied. False when the factor fails, a block is not the

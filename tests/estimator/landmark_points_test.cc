@@ -79,7 +79,7 @@ TEST(LandmarkPoints, TheDenseSolveIsTheCeresSolve) {
     stages.OffsetSaved(newest_offset_m, points_offset_m);
     EXPECT_TRUE(stages.Solve(SolverBackend::kDense));
     const std::array<double, kPoseSize> dense = stages.NewestPose();
-    const std::map<int, std::array<double, 3>> dense_points = stages.points_W();
+    const std::map<int, std::array<double, kPointSize>> dense_points = stages.points_W();
     EXPECT_TRUE(stages.Solve(SolverBackend::kCeres));
     const std::array<double, kPoseSize> ceres = stages.NewestPose();
     double points_moved = 0.0, points_apart = 0.0, newest_apart = 0.0;
