@@ -70,12 +70,12 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
     }
   pivots_.resize(n);
   couplings_.resize(n);
-  first_pose_column_.resize(n);
-  pose_rows_.setZero(kSpeedBiasSize * n, schur_columns);
+  first_schur_column_.resize(n);
+  schur_rows_.setZero(kSpeedBiasSize * n, schur_columns);
   // Speed-bias blocks from the newest to the oldest: block k's pivot is reduced by the newer block's
   // elimination, its rows over the Schur complement gain the newer block's fill.
   for (int k = n - 1; k >= 0; --k) {
-    auto rows = pose_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * k);
+    auto rows = schur_rows_.middleRows<kSpeedBiasSize>(kSpeedBiasSize * k);
     const int sb = WindowInformation::SpeedBiasColumn(k);
     int first = schur_columns;
     for (const SchurBlock& b : schur_blocks_) {
@@ -90,13 +90,13 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
       E = A.block<kSpeedBiasSize, kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k + 1), sb).transpose();
       pivots_[k + 1].matrixU().solveInPlace<Eigen::OnTheRight>(E);
       pivot.noalias() -= E * E.transpose();
-      first = std::min(first, first_pose_column_[k + 1]);
-      const PoseRowsBlock newer = NonzeroPoseRows(k + 1);
+      first = std::min(first, first_schur_column_[k + 1]);
+      const SchurRowsBlock newer = NonzeroSchurRows(k + 1);
       rows.rightCols(newer.cols()).noalias() -= E.lazyProduct(newer);
     }
     pivots_[k].compute(pivot);
     if (pivots_[k].info() != Eigen::Success) return false;
-    first_pose_column_[k] = first;
+    first_schur_column_[k] = first;
     const int width = schur_columns - first;
     // X = L_k^-1 X by the explicit inverse: a 9-row product, where a triangular solve of this size spends
     // its time in blocking.
@@ -105,20 +105,20 @@ bool WindowFactorization::Compute(const Eigen::MatrixXd& A, int points) {
     rows.rightCols(width) = X;
     S.bottomRightCorner(width, width).selfadjointView<Eigen::Lower>().rankUpdate(X.transpose(), -1.0);
   }
-  poses_.compute(S);
-  return poses_.info() == Eigen::Success;
+  schur_.compute(S);
+  return schur_.info() == Eigen::Success;
 }
 
-WindowFactorization::PoseRowsBlock WindowFactorization::NonzeroPoseRows(int k) const {
-  const int first = first_pose_column_[k];
-  return PoseRowsBlock(pose_rows_, kSpeedBiasSize * k, first, kSpeedBiasSize, pose_rows_.cols() - first);
+WindowFactorization::SchurRowsBlock WindowFactorization::NonzeroSchurRows(int k) const {
+  const int first = first_schur_column_[k];
+  return SchurRowsBlock(schur_rows_, kSpeedBiasSize * k, first, kSpeedBiasSize, schur_rows_.cols() - first);
 }
 
 Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
   if (!chain_) return dense_.solve(b);
   const int n = frames_;
   // Forward: the chain (newest first), then the Schur complement's right-hand side reduced by it.
-  Eigen::VectorXd y(kSpeedBiasSize * n), b_schur(pose_rows_.cols());
+  Eigen::VectorXd y(kSpeedBiasSize * n), b_schur(schur_rows_.cols());
   for (int k = n - 1; k >= 0; --k) {
     auto y_k = y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
     y_k = b.segment<kSpeedBiasSize>(WindowInformation::SpeedBiasColumn(k));
@@ -128,16 +128,16 @@ Eigen::VectorXd WindowFactorization::Solve(const Eigen::VectorXd& b) const {
   for (const SchurBlock& block : schur_blocks_)
     b_schur.segment(block.s, block.size) = b.segment(block.a, block.size);
   for (int k = 0; k < n; ++k) {
-    const PoseRowsBlock rows = NonzeroPoseRows(k);
+    const SchurRowsBlock rows = NonzeroSchurRows(k);
     b_schur.tail(rows.cols()).noalias() -= rows.transpose() * y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
   }
-  const Eigen::VectorXd x_schur = poses_.solve(b_schur);
+  const Eigen::VectorXd x_schur = schur_.solve(b_schur);
   // Backward: the chain from the oldest, given the points and poses.
   Eigen::VectorXd x(b.size());
   for (const SchurBlock& block : schur_blocks_)
     x.segment(block.a, block.size) = x_schur.segment(block.s, block.size);
   for (int k = 0; k < n; ++k) {
-    const PoseRowsBlock rows = NonzeroPoseRows(k);
+    const SchurRowsBlock rows = NonzeroSchurRows(k);
     Eigen::Matrix<double, kSpeedBiasSize, 1> x_k = y.segment<kSpeedBiasSize>(kSpeedBiasSize * k);
     x_k.noalias() -= rows * x_schur.tail(rows.cols());
     if (k > 0)
@@ -158,7 +158,7 @@ WindowFactorization::PoseMatrix WindowFactorization::NewestPoseCovariance() cons
   }
   // The newest pose is the last block of the Schur complement's factor: its own Schur complement is
   // L_nn L_nn^T.
-  const PoseMatrix L_nn = poses_.matrixLLT()
+  const PoseMatrix L_nn = schur_.matrixLLT()
                               .bottomRightCorner<kPoseTangentSize, kPoseTangentSize>()
                               .triangularView<Eigen::Lower>();
   const PoseMatrix L_inv = L_nn.triangularView<Eigen::Lower>().solve(PoseMatrix::Identity());

@@ -44,7 +44,7 @@ class WindowFactorization {
 
  private:
   using SpeedBiasMatrix = Eigen::Matrix<double, kSpeedBiasSize, kSpeedBiasSize>;
-  using PoseRowsBlock = Eigen::Block<const Eigen::MatrixXd, kSpeedBiasSize, Eigen::Dynamic>;
+  using SchurRowsBlock = Eigen::Block<const Eigen::MatrixXd, kSpeedBiasSize, Eigen::Dynamic>;
   // A block of the Schur complement: its first column in A and in the Schur complement, and its size.
   struct SchurBlock {
     int a = 0;
@@ -52,8 +52,9 @@ class WindowFactorization {
     int size = 0;
   };
 
-  // Speed-bias block k's rows of the factor over the poses, from its first nonzero column on.
-  PoseRowsBlock NonzeroPoseRows(int k) const;
+  // Speed-bias block k's rows of the factor over the Schur complement's columns, from its first nonzero
+  // column on.
+  SchurRowsBlock NonzeroSchurRows(int k) const;
 
   int frames_ = 0;
   bool chain_ = false;
@@ -64,11 +65,11 @@ class WindowFactorization {
   std::vector<Eigen::LLT<SpeedBiasMatrix>> pivots_;
   std::vector<SpeedBiasMatrix> couplings_;
   // The factor's rows of speed-bias block k over the Schur complement's columns (9 rows per block), nonzero
-  // from column first_pose_column_[k] on.
-  Eigen::MatrixXd pose_rows_;
-  std::vector<int> first_pose_column_;
-  // The Schur complement of the points and poses, factorized.
-  Eigen::LLT<Eigen::MatrixXd> poses_;
+  // from column first_schur_column_[k] on.
+  Eigen::MatrixXd schur_rows_;
+  std::vector<int> first_schur_column_;
+  // The Schur complement of the points and the poses, factorized.
+  Eigen::LLT<Eigen::MatrixXd> schur_;
   // The dense factorization, when the speed-bias blocks do not form a chain.
   Eigen::LLT<Eigen::MatrixXd> dense_;
 };
