@@ -13,23 +13,21 @@
 namespace vigil::estimator {
 
 struct CameraObservation {
-  // `p` and `R`: the observing frame's position and orientation in W; R_BC, p_BC: the camera in the body.
+  // `p` and `R`: the observing frame's position and orientation in W; R_BC, p_BC: the camera in the body;
+  // sqrt_information: focal length / pixel std. R_BC must outlive the observation (a factor's member).
   CameraObservation(const Eigen::Vector3d& p_W, const Eigen::Vector3d& p, const Eigen::Matrix3d& R,
-                    const Eigen::Matrix3d& R_BC, const Eigen::Vector3d& p_BC)
-      : p_B(R.transpose() * (p_W - p)) {
+                    const Eigen::Matrix3d& R_BC, const Eigen::Vector3d& p_BC, double sqrt_information)
+      : p_B(R.transpose() * (p_W - p)), R_BC_(R_BC), sqrt_information_(sqrt_information) {
     const Eigen::Vector3d p_C = R_BC.transpose() * (p_B - p_BC);
     inv_z = 1.0 / p_C.z();
     u = p_C.head<2>() * inv_z;
   }
-  Eigen::Vector2d Residual(const Eigen::Vector2d& n, double sqrt_information) const {
-    return sqrt_information * (u - n);
-  }
+  Eigen::Vector2d Residual(const Eigen::Vector2d& n) const { return sqrt_information_ * (u - n); }
   // d r / d p_B. Chain rule through p_C = R_CB (p_B - p_BC): d r / d p_C = sqrt_info / z [I2, -u], so
   // d r / d p_B = sqrt_info / z (rows 0, 1 of R_CB - u row 2 of R_CB).
-  Eigen::Matrix<double, 2, 3> ResidualByBodyPoint(const Eigen::Matrix3d& R_BC,
-                                                  double sqrt_information) const {
-    const auto R_CB = R_BC.transpose();
-    return (sqrt_information * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
+  Eigen::Matrix<double, 2, 3> ResidualByBodyPoint() const {
+    const auto R_CB = R_BC_.transpose();
+    return (sqrt_information_ * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
   }
   // The observing pose's Jacobian (2 x kPoseSize, row-major at `jacobian`) from d r / d p_B and
   // d r / d p_W = d r / d p_B R^T.
@@ -44,6 +42,10 @@ struct CameraObservation {
   Eigen::Vector3d p_B;
   Eigen::Vector2d u;
   double inv_z = 0.0;
+
+ private:
+  const Eigen::Matrix3d& R_BC_;
+  double sqrt_information_;
 };
 
 }  // namespace vigil::estimator

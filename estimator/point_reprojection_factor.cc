@@ -12,11 +12,11 @@ bool PointReprojectionFactor::Evaluate(double const* const* parameters, double* 
                                        double** jacobians) const {
   const Eigen::Matrix3d R_j = PoseQ(parameters[0]).toRotationMatrix();
   const CameraObservation observation(Eigen::Map<const Eigen::Vector3d>(parameters[1]), PoseP(parameters[0]),
-                                      R_j, R_BC_, p_BC_);
+                                      R_j, R_BC_, p_BC_, sqrt_information_);
   Eigen::Map<Eigen::Vector2d> r(residuals);
-  r = observation.Residual(n_j_, sqrt_information_);
+  r = observation.Residual(n_j_);
   if (jacobians == nullptr) return true;
-  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = observation.ResidualByBodyPoint(R_BC_, sqrt_information_);
+  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = observation.ResidualByBodyPoint();
   const Eigen::Matrix<double, 2, 3> d_r_d_pW = d_r_d_pBj * R_j.transpose();
   if (jacobians[0] != nullptr) observation.ObservingPoseJacobian(d_r_d_pBj, d_r_d_pW, jacobians[0]);
   if (jacobians[1] != nullptr) {

@@ -26,12 +26,12 @@ bool ReprojectionFactor::Evaluate(double const* const* parameters, double* resid
 
   const Vector3d p_Bi = R_BC_ * (n_i_ * inv_rho) + p_BC_;
   const Vector3d p_W = R_i * p_Bi + p_i;
-  const CameraObservation observation(p_W, p_j, R_j, R_BC_, p_BC_);
+  const CameraObservation observation(p_W, p_j, R_j, R_BC_, p_BC_, sqrt_information_);
   Eigen::Map<Eigen::Vector2d> r(residuals);
-  r = observation.Residual(n_j_, sqrt_information_);
+  r = observation.Residual(n_j_);
   if (jacobians == nullptr) return true;
 
-  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = observation.ResidualByBodyPoint(R_BC_, sqrt_information_);
+  const Eigen::Matrix<double, 2, 3> d_r_d_pBj = observation.ResidualByBodyPoint();
   const Eigen::Matrix<double, 2, 3> d_r_d_pW = d_r_d_pBj * R_j.transpose();
   const Eigen::Matrix<double, 2, 3> d_r_d_pBi = d_r_d_pW * R_i;
   if (jacobians[0] != nullptr) {
