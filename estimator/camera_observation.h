@@ -14,10 +14,10 @@ namespace vigil::estimator {
 
 struct CameraObservation {
   // `p` and `R`: the observing frame's position and orientation in W; R_BC, p_BC: the camera in the body;
-  // sqrt_information: focal length / pixel std. R_BC must outlive the observation (a factor's member).
+  // sqrt_information: focal length / pixel std.
   CameraObservation(const Eigen::Vector3d& p_W, const Eigen::Vector3d& p, const Eigen::Matrix3d& R,
                     const Eigen::Matrix3d& R_BC, const Eigen::Vector3d& p_BC, double sqrt_information)
-      : p_B(R.transpose() * (p_W - p)), R_BC_(R_BC), sqrt_information_(sqrt_information) {
+      : p_B(R.transpose() * (p_W - p)), R_CB_(R_BC.transpose()), sqrt_information_(sqrt_information) {
     const Eigen::Vector3d p_C = R_BC.transpose() * (p_B - p_BC);
     inv_z = 1.0 / p_C.z();
     u = p_C.head<2>() * inv_z;
@@ -26,8 +26,7 @@ struct CameraObservation {
   // d r / d p_B. Chain rule through p_C = R_CB (p_B - p_BC): d r / d p_C = sqrt_info / z [I2, -u], so
   // d r / d p_B = sqrt_info / z (rows 0, 1 of R_CB - u row 2 of R_CB).
   Eigen::Matrix<double, 2, 3> ResidualByBodyPoint() const {
-    const auto R_CB = R_BC_.transpose();
-    return (sqrt_information_ * inv_z) * (R_CB.topRows<2>() - u * R_CB.row(2));
+    return (sqrt_information_ * inv_z) * (R_CB_.topRows<2>() - u * R_CB_.row(2));
   }
   // The observing pose's Jacobian (2 x kPoseSize, row-major at `jacobian`) from d r / d p_B and
   // d r / d p_W = d r / d p_B R^T.
@@ -44,7 +43,7 @@ struct CameraObservation {
   double inv_z = 0.0;
 
  private:
-  const Eigen::Matrix3d& R_BC_;
+  Eigen::Matrix3d R_CB_;  // the camera's orientation in the body, inverted: p_C = R_CB (p_B - p_BC)
   double sqrt_information_;
 };
 
